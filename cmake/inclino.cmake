@@ -1,0 +1,196 @@
+# Build conventions shared by every module. Included once from the top-level CMakeLists.txt.
+#
+# Targets (INCLINO_TARGET, set by the toolchain file; "host" when there is none):
+#   host           native gcc; every test, host tools, sanitizers (INCLINO_SANITIZE=ON)
+#   cortex-m0plus  arm-none-eabi; firmware/driver/HAL tests under qemu-system-arm
+#   cortex-m3      idem
+#   cortex-m4f     idem (hard float ABI; the firmware itself uses no floating point)
+#   rv32imac       riscv64-unknown-elf, freestanding; every firmware module compiled and linked
+#
+# Module kinds:
+#   inclino_add_module(NAME n SOURCES .. [INCLUDE dirs] [DEPS targets] [FREESTANDING] [HOST_ONLY])
+#       static library inclino_<n>. FREESTANDING modules (firmware/, drivers/, hal/ except the
+#       host port) are C11 with no libc, no heap and no floating point; they are built for every
+#       target. Others (sim/) are hosted C and are built where tests run (host and Cortex-M).
+#   inclino_add_test(NAME n SOURCES .. [LIBS ..] [HOST_ONLY] [WILL_FAIL] [TIMEOUT s] [LABELS ..])
+#       a test executable; on Cortex-M it runs under QEMU through CMAKE_CROSSCOMPILING_EMULATOR.
+#   inclino_add_host_tool(NAME n SOURCES .. [LIBS ..])  host-only program (C or C++).
+#   inclino_add_image(NAME n SOURCES .. [LIBS ..])      cross firmware image with map + size report.
+
+include_guard(GLOBAL)
+
+if(NOT DEFINED INCLINO_TARGET)
+  set(INCLINO_TARGET host)
+endif()
+set(INCLINO_IS_HOST OFF)
+set(INCLINO_IS_ARM OFF)
+set(INCLINO_IS_RISCV OFF)
+if(INCLINO_TARGET STREQUAL "host")
+  set(INCLINO_IS_HOST ON)
+elseif(INCLINO_TARGET MATCHES "^cortex-m")
+  set(INCLINO_IS_ARM ON)
+elseif(INCLINO_TARGET STREQUAL "rv32imac")
+  set(INCLINO_IS_RISCV ON)
+else()
+  message(FATAL_ERROR "Unknown INCLINO_TARGET '${INCLINO_TARGET}'")
+endif()
+
+# Hosted code (sim/, tests) is built where tests run: on the host natively and on Cortex-M under
+# QEMU with newlib. The RISC-V toolchain has no libc, so there only freestanding code is built.
+if(INCLINO_IS_HOST OR INCLINO_IS_ARM)
+  set(INCLINO_HOSTED ON)
+else()
+  set(INCLINO_HOSTED OFF)
+endif()
+
+option(INCLINO_SANITIZE "Build the host with AddressSanitizer and UndefinedBehaviorSanitizer" OFF)
+if(INCLINO_SANITIZE AND NOT INCLINO_IS_HOST)
+  message(FATAL_ERROR "INCLINO_SANITIZE is only for the host target")
+endif()
+
+if(INCLINO_IS_HOST)
+  enable_language(CXX)
+  set(CMAKE_CXX_STANDARD 17)
+  set(CMAKE_CXX_STANDARD_REQUIRED ON)
+  set(CMAKE_CXX_EXTENSIONS OFF)
+endif()
+
+set(CMAKE_C_STANDARD 11)
+set(CMAKE_C_STANDARD_REQUIRED ON)
+set(CMAKE_C_EXTENSIONS OFF)
+set(CMAKE_EXPORT_COMPILE_COMMANDS ON)
+
+# -Wall -Wextra -Werror on every build, host and cross.
+add_compile_options(-Wall -Wextra -Werror
+  $<$<COMPILE_LANGUAGE:C>:-Wstrict-prototypes>
+  $<$<COMPILE_LANGUAGE:C>:-Wmissing-prototypes>
+  -Wshadow -Wvla -Wformat=2 -Wundef)
+
+if(INCLINO_SANITIZE)
+  add_compile_options(-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer)
+  add_link_options(-fsanitize=address,undefined -fno-sanitize-recover=all)
+endif()
+
+if(INCLINO_IS_HOST)
+  enable_testing()
+  set(INCLINO_CAN_RUN_TESTS ON)
+elseif(INCLINO_IS_ARM)
+  enable_testing()
+  set(INCLINO_CAN_RUN_TESTS ON)
+  if(NOT CMAKE_CROSSCOMPILING_EMULATOR)
+    message(FATAL_ERROR "The ${INCLINO_TARGET} toolchain file sets no CMAKE_CROSSCOMPILING_EMULATOR")
+  endif()
+else()
+  # RISC-V: no test runs yet (see docs/build.md); ctest must still find something to run, so the
+  # rv32 checks (no float, no libc, image links) are added as tests that run on the build host.
+  enable_testing()
+  set(INCLINO_CAN_RUN_TESTS OFF)
+endif()
+
+set(INCLINO_ROOT "${CMAKE_CURRENT_LIST_DIR}/..")
+cmake_path(NORMAL_PATH INCLINO_ROOT)
+
+# Compile options for freestanding code (firmware/, drivers/, hal/).
+#  -ffreestanding: only <stdint.h>, <stdbool.h>, <stddef.h>, <limits.h>.
+#  -fno-tree-loop-distribute-patterns: stops gcc turning loops into memcpy/memset calls.
+#  -Wdouble-promotion -Wfloat-equal: a float that slips in is at least loud; the cross checks
+#  (tests/build) prove no soft-float helper is linked.
+set(INCLINO_FREESTANDING_OPTIONS -ffreestanding -fno-tree-loop-distribute-patterns
+  -Wdouble-promotion -Wfloat-equal -Wcast-align -Wpointer-arith)
+
+function(inclino_add_subdirectories)
+  file(GLOB children LIST_DIRECTORIES true RELATIVE "${CMAKE_CURRENT_SOURCE_DIR}"
+       "${CMAKE_CURRENT_SOURCE_DIR}/*")
+  list(SORT children)
+  foreach(child IN LISTS children)
+    if(IS_DIRECTORY "${CMAKE_CURRENT_SOURCE_DIR}/${child}"
+       AND EXISTS "${CMAKE_CURRENT_SOURCE_DIR}/${child}/CMakeLists.txt")
+      add_subdirectory(${child})
+    endif()
+  endforeach()
+endfunction()
+
+# All freestanding modules, collected so that the per-target images link every one of them.
+set_property(GLOBAL PROPERTY INCLINO_FREESTANDING_MODULES "")
+
+function(inclino_add_module)
+  cmake_parse_arguments(M "FREESTANDING;HOST_ONLY;HOSTED" "NAME" "SOURCES;INCLUDE;DEPS;PRIVATE_DEPS" ${ARGN})
+  if(NOT M_NAME)
+    message(FATAL_ERROR "inclino_add_module: NAME is required")
+  endif()
+  if(M_HOST_ONLY AND NOT INCLINO_IS_HOST)
+    return()
+  endif()
+  if(NOT M_FREESTANDING AND NOT INCLINO_HOSTED)
+    return()
+  endif()
+  set(tgt inclino_${M_NAME})
+  if(M_SOURCES)
+    add_library(${tgt} STATIC ${M_SOURCES})
+    set(scope PUBLIC)
+  else()
+    add_library(${tgt} INTERFACE)
+    set(scope INTERFACE)
+  endif()
+  if(M_INCLUDE)
+    target_include_directories(${tgt} ${scope} ${M_INCLUDE})
+  endif()
+  if(M_DEPS)
+    target_link_libraries(${tgt} ${scope} ${M_DEPS})
+  endif()
+  if(M_PRIVATE_DEPS)
+    target_link_libraries(${tgt} PRIVATE ${M_PRIVATE_DEPS})
+  endif()
+  if(M_FREESTANDING AND M_SOURCES)
+    target_compile_options(${tgt} PRIVATE ${INCLINO_FREESTANDING_OPTIONS})
+    target_compile_definitions(${tgt} PRIVATE INCLINO_FREESTANDING=1)
+    set_property(GLOBAL APPEND PROPERTY INCLINO_FREESTANDING_MODULES ${tgt})
+  endif()
+endfunction()
+
+function(inclino_add_test)
+  cmake_parse_arguments(T "HOST_ONLY;WILL_FAIL;NO_EMULATOR" "NAME;TIMEOUT" "SOURCES;LIBS;LABELS;ARGS" ${ARGN})
+  if(NOT T_NAME)
+    message(FATAL_ERROR "inclino_add_test: NAME is required")
+  endif()
+  if(T_HOST_ONLY AND NOT INCLINO_IS_HOST)
+    return()
+  endif()
+  if(NOT INCLINO_CAN_RUN_TESTS)
+    return()
+  endif()
+  set(exe test_${T_NAME})
+  add_executable(${exe} ${T_SOURCES})
+  target_link_libraries(${exe} PRIVATE inclino_unit ${T_LIBS})
+  if(INCLINO_IS_ARM)
+    inclino_link_qemu_board(${exe})
+  endif()
+  add_test(NAME ${T_NAME} COMMAND ${exe} ${T_ARGS})
+  if(NOT T_TIMEOUT)
+    set(T_TIMEOUT 120)
+  endif()
+  set_tests_properties(${T_NAME} PROPERTIES TIMEOUT ${T_TIMEOUT})
+  if(T_WILL_FAIL)
+    set_tests_properties(${T_NAME} PROPERTIES WILL_FAIL TRUE)
+  endif()
+  set(labels ${INCLINO_TARGET} ${T_LABELS})
+  set_tests_properties(${T_NAME} PROPERTIES LABELS "${labels}")
+endfunction()
+
+function(inclino_add_host_tool)
+  cmake_parse_arguments(H "" "NAME" "SOURCES;LIBS" ${ARGN})
+  if(NOT INCLINO_IS_HOST)
+    return()
+  endif()
+  add_executable(${H_NAME} ${H_SOURCES})
+  target_link_libraries(${H_NAME} PRIVATE ${H_LIBS})
+endfunction()
+
+# Cross-target helpers (board support, images, size report) live in their own file.
+include(inclino_cross)
+
+function(inclino_finalize)
+  if(NOT INCLINO_IS_HOST)
+    inclino_cross_finalize()
+  endif()
+endfunction()

@@ -1,0 +1,100 @@
+/*
+ * unit.h - the project's minimal unit-test harness.
+ *
+ * A test program is a main() that runs cases with UNIT_RUN() and returns unit_report(). Every
+ * CHECK prints the file, line, expression and the values involved when it fails, counts the
+ * failure and lets the case continue; REQUIRE variants return from the case. The exit status is
+ * the number of failed checks (capped at 125), so CTest sees a failure on the host and, through
+ * QEMU's semihosting exit code, on the emulated MCU.
+ *
+ * Works with any hosted C library (glibc on the host, newlib under QEMU).
+ */
+#ifndef INCLINO_UNIT_H
+#define INCLINO_UNIT_H
+
+#include <stdint.h>
+#include <stdbool.h>
+#include <inttypes.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+extern unsigned unit_checks;
+extern unsigned unit_failures;
+
+void unit_fail(const char *file, int line, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 3, 4)))
+#endif
+    ;
+void unit_begin(const char *name);
+int unit_report(void);
+
+#define UNIT_RUN(fn)       \
+    do {                   \
+        unit_begin(#fn);   \
+        fn();              \
+    } while (0)
+
+#define CHECK(cond)                                                        \
+    do {                                                                   \
+        unit_checks++;                                                     \
+        if (!(cond)) unit_fail(__FILE__, __LINE__, "CHECK(%s)", #cond);    \
+    } while (0)
+
+#define REQUIRE(cond)                                                      \
+    do {                                                                   \
+        unit_checks++;                                                     \
+        if (!(cond)) {                                                     \
+            unit_fail(__FILE__, __LINE__, "REQUIRE(%s)", #cond);           \
+            return;                                                        \
+        }                                                                  \
+    } while (0)
+
+#define CHECK_EQ_INT(a, b)                                                              \
+    do {                                                                                \
+        long long unit_a_ = (long long)(a), unit_b_ = (long long)(b);                   \
+        unit_checks++;                                                                  \
+        if (unit_a_ != unit_b_)                                                         \
+            unit_fail(__FILE__, __LINE__, "%s == %s: %lld != %lld", #a, #b, unit_a_, unit_b_); \
+    } while (0)
+
+#define CHECK_EQ_HEX(a, b)                                                              \
+    do {                                                                                \
+        unsigned long long unit_a_ = (unsigned long long)(a), unit_b_ = (unsigned long long)(b); \
+        unit_checks++;                                                                  \
+        if (unit_a_ != unit_b_)                                                         \
+            unit_fail(__FILE__, __LINE__, "%s == %s: 0x%llx != 0x%llx", #a, #b, unit_a_, unit_b_); \
+    } while (0)
+
+/* |a - b| <= tol, in integers (64-bit). */
+#define CHECK_NEAR_INT(a, b, tol)                                                       \
+    do {                                                                                \
+        long long unit_a_ = (long long)(a), unit_b_ = (long long)(b), unit_t_ = (long long)(tol); \
+        long long unit_d_ = unit_a_ > unit_b_ ? unit_a_ - unit_b_ : unit_b_ - unit_a_;  \
+        unit_checks++;                                                                  \
+        if (unit_d_ > unit_t_)                                                          \
+            unit_fail(__FILE__, __LINE__, "%s ~ %s: %lld vs %lld, |diff| %lld > %lld", #a, #b, \
+                      unit_a_, unit_b_, unit_d_, unit_t_);                              \
+    } while (0)
+
+/* |a - b| <= tol, in double (tests only; firmware never uses floating point). */
+#define CHECK_NEAR(a, b, tol)                                                           \
+    do {                                                                                \
+        double unit_a_ = (double)(a), unit_b_ = (double)(b), unit_t_ = (double)(tol);   \
+        double unit_d_ = unit_a_ > unit_b_ ? unit_a_ - unit_b_ : unit_b_ - unit_a_;     \
+        unit_checks++;                                                                  \
+        if (!(unit_d_ <= unit_t_))                                                      \
+            unit_fail(__FILE__, __LINE__, "%s ~ %s: %.9g vs %.9g, |diff| %.3g > %.3g", #a, #b, \
+                      unit_a_, unit_b_, unit_d_, unit_t_);                              \
+    } while (0)
+
+#define CHECK_OK(expr)  CHECK_EQ_INT((expr), 0)
+#define CHECK_ERR(expr, err) CHECK_EQ_INT((expr), (err))
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* INCLINO_UNIT_H */
