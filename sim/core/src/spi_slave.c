@@ -81,6 +81,7 @@ static void cs_fall(struct sim_spi_slave *s, uint64_t t)
     s->in = 0;
     s->edge_seen = false;
     s->t_cs_fall = t;
+    s->frame_min_period_ns = UINT32_MAX;
     if (s->cfg.mode == SIM_SPI_MODE_AUTO_0_3) {
         s->cpol = sclk ? 1u : 0u;
         s->cpha = s->cpol;
@@ -160,6 +161,9 @@ static void sclk_edge(struct sim_spi_slave *s, bool level, uint64_t t)
         return;
     }
     if (sampling) {
+        if (s->t_last_sample > s->t_cs_fall && t - s->t_last_sample < s->frame_min_period_ns) {
+            s->frame_min_period_ns = (uint32_t)(t - s->t_last_sample);
+        }
         if (s->t_last_sample > s->t_cs_fall && t - s->t_last_sample < s->cfg.timing.min_period_ns) {
             /* Faster than the shift register: the bit is lost. */
             report(s, SIM_VIOL_SCLK_FAST, t, t - s->t_last_sample, s->cfg.timing.min_period_ns);

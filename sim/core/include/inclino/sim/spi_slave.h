@@ -91,6 +91,9 @@ struct sim_spi_slave {
     bool edge_seen;               /* an SCLK edge occurred in this frame */
     bool mosi_prev;               /* MOSI level before its last change */
     uint64_t t_cs_fall, t_cs_rise, t_last_edge, t_last_sample, t_mosi_change;
+    uint32_t frame_min_period_ns; /* shortest sampling-edge interval seen in this CS frame
+                                     (UINT32_MAX before the second sampling edge); lets a model
+                                     check a limit that depends on the command, e.g. burst */
     /* MISO changes waiting for their tDAV, in order. */
     struct { int handle; bool level; } q[SIM_SPI_MISO_QUEUE];
     unsigned q_head, q_len;
