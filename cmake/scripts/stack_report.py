@@ -1,0 +1,220 @@
+#!/usr/bin/env python3
+"""stack_report.py - stack use of a cross-linked image, from gcc's -fstack-usage and
+-fcallgraph-info=su output.
+
+Every freestanding module (and the image startup) is compiled with -fstack-usage
+-fcallgraph-info=su (cmake/inclino_cross.cmake), so gcc writes next to each object a .su file
+(frame size per function: static, dynamic, or dynamic,bounded) and a .ci file (the call graph
+of that translation unit, in VCG). This script finds the objects the linker used (LOAD lines of
+the map file; for an archive, the objects of its CMake target directory), keeps the functions
+present in the ELF, and reports:
+  - the largest frames;
+  - the worst-case stack depth from main() and from Reset_Handler/_start, with the path, and of
+    each interrupt handler, and an estimate for the whole image: reset path + deepest handler +
+    the hardware exception frame (Cortex-M: 32 bytes; 104 with an FPU context on the M4F).
+Limits, stated in the report: calls through function pointers (the HAL ops table, callbacks)
+are not followed - each is listed as an indirect call of its caller; recursion is reported and
+cut; functions without stack information (libgcc, assembly) count as 0 bytes and are listed.
+
+Usage: stack_report.py --map X.map --elf X.elf --nm NM --target T --out X.stack.txt [--print]
+"""
+import argparse
+import glob
+import os
+import re
+import subprocess
+import sys
+
+INDIRECT = "__indirect_call"
+
+
+def load_objects(map_path):
+    """Object files the link used, with the .ci/.su prefix (path without its last extension)."""
+    base = os.path.dirname(os.path.abspath(map_path))
+    prefixes = []
+    with open(map_path, encoding="utf-8", errors="replace") as f:
+        for line in f:
+            m = re.match(r"^LOAD (.+)$", line.rstrip("\n"))
+            if not m or m.group(1) == "linker stubs":
+                continue
+            path = m.group(1)
+            if not os.path.isabs(path):
+                path = os.path.normpath(os.path.join(base, path))
+            if path.endswith(".a"):
+                lib = re.sub(r"^lib", "", os.path.basename(path)[:-2])
+                tdir = os.path.join(os.path.dirname(path), "CMakeFiles", lib + ".dir")
+                for ci in glob.glob(os.path.join(tdir, "**", "*.ci"), recursive=True):
+                    prefixes.append(ci[:-3])
+            else:
+                prefixes.append(os.path.splitext(path)[0])
+    return sorted(set(prefixes))
+
+
+def module_of(prefix):
+    m = re.search(r"CMakeFiles/([^/]+)\.dir/", prefix)
+    if not m:
+        return "?"
+    name = m.group(1)
+    return "startup" if name == "inclino_rt_startup" else name
+
+
+def parse_ci(path):
+    """Nodes {title: (name, bytes, qualifier, location)} and edges [(src, dst)] of one .ci."""
+    nodes, edges = {}, []
+    node_rx = re.compile(r'^node: \{ title: "([^"]+)" label: "([^"]*)"')
+    edge_rx = re.compile(r'^edge: \{ sourcename: "([^"]+)" targetname: "([^"]+)"')
+    with open(path, encoding="utf-8", errors="replace") as f:
+        for line in f:
+            m = node_rx.match(line)
+            if m:
+                parts = m.group(2).split("\\n")
+                size, qual, loc = None, None, parts[1] if len(parts) > 1 else ""
+                if len(parts) > 2:
+                    sm = re.match(r"(\d+) bytes \(([^)]*)\)", parts[2])
+                    if sm:
+                        size, qual = int(sm.group(1)), sm.group(2)
+                nodes[m.group(1)] = (parts[0], size, qual, loc)
+                continue
+            m = edge_rx.match(line)
+            if m:
+                edges.append((m.group(1), m.group(2)))
+    return nodes, edges
+
+
+def elf_functions(nm, elf):
+    out = subprocess.run([nm, "--defined-only", elf], check=True, capture_output=True,
+                         text=True).stdout
+    names = set()
+    for line in out.splitlines():
+        parts = line.split()
+        if len(parts) == 3 and parts[1] in "TtWw":
+            names.add(parts[2])
+    return names
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--map", required=True)
+    ap.add_argument("--elf", required=True)
+    ap.add_argument("--nm", required=True)
+    ap.add_argument("--target", required=True)
+    ap.add_argument("--out", required=True)
+    ap.add_argument("--print", action="store_true")
+    ap.add_argument("--top", type=int, default=10)
+    args = ap.parse_args()
+
+    image = os.path.splitext(os.path.basename(args.elf))[0]
+    in_elf = elf_functions(args.nm, args.elf)
+
+    # Functions with stack information, keyed by .ci title (plain name, or "file:name" for static
+    # functions, which gcc qualifies so that equal names in two files stay apart).
+    funcs = {}     # title -> dict(name, size, qual, module)
+    calls = {}     # title -> list of callee titles (as written in the .ci)
+    for prefix in load_objects(args.map):
+        ci = prefix + ".ci"
+        if not os.path.exists(ci):
+            continue
+        nodes, edges = parse_ci(ci)
+        for title, (name, size, qual, _loc) in nodes.items():
+            if size is None or name not in in_elf:
+                continue
+            funcs[title] = {"name": name, "size": size, "qual": qual, "module": module_of(prefix)}
+        for src, dst in edges:
+            calls.setdefault(src, []).append(dst)
+
+    by_name = {}
+    for title, f in funcs.items():
+        by_name.setdefault(f["name"], title)
+
+    def resolve(title):
+        if title in funcs:
+            return title
+        name = title.rsplit(":", 1)[-1]
+        return by_name.get(name)
+
+    unknown = set()
+    recursion = set()
+    memo = {}
+
+    def depth(title, stack):
+        """(bytes, path, indirect callers on the path) of the deepest chain from title."""
+        if title in memo:
+            return memo[title]
+        if title in stack:
+            recursion.add(funcs[title]["name"])
+            return (0, [], [])
+        stack.add(title)
+        best = (0, [], [])
+        indirect = False
+        for callee in calls.get(title, []):
+            if callee == INDIRECT:
+                indirect = True
+                continue
+            r = resolve(callee)
+            if r is None:
+                unknown.add(callee.rsplit(":", 1)[-1])
+                continue
+            d = depth(r, stack)
+            if (d[0], len(d[1])) > (best[0], len(best[1])):
+                best = d
+        stack.discard(title)
+        f = funcs[title]
+        ind = ([f["name"]] if indirect else []) + best[2]
+        memo[title] = (f["size"] + best[0], [title] + best[1], ind)
+        return memo[title]
+
+    lines = [f"Stack report: {image} ({args.target})"]
+    lines.append(f"Largest frames ({min(args.top, len(funcs))} of {len(funcs)} functions with "
+                 "stack information):")
+    lines.append(f"  {'bytes':>6}  {'function':<32} {'module':<24} kind")
+    for title, f in sorted(funcs.items(), key=lambda kv: (-kv[1]["size"], kv[1]["name"]))[:args.top]:
+        lines.append(f"  {f['size']:>6}  {f['name']:<32} {f['module']:<24} {f['qual']}")
+
+    def chain(root_name):
+        t = resolve(root_name)
+        if t is None:
+            return None
+        return depth(t, set())
+
+    lines.append("Worst-case depth (frames along the deepest static call chain):")
+    roots = []
+    for root in ("main", "Reset_Handler", "_start"):
+        r = chain(root)
+        if r is not None:
+            roots.append((root, r))
+    isr_names = sorted({f["name"] for f in funcs.values()
+                        if (f["name"].endswith("_Handler") and f["name"] not in
+                            ("Reset_Handler", "Default_Handler")) or f["name"] == "rt_irq_handler"})
+    isrs = [(n, chain(n)) for n in isr_names]
+    for name, (total, path, ind) in roots + isrs:
+        names = " > ".join(funcs[t]["name"] for t in path)
+        lines.append(f"  {name:<20} {total:>6} bytes: {names}")
+        if ind:
+            lines.append(f"  {'':<20}        indirect calls not followed, in: "
+                         + ", ".join(dict.fromkeys(ind)))
+    reset = next((r for n, r in roots if n in ("Reset_Handler", "_start")), None)
+    if reset is not None:
+        frame = 0
+        if args.target.startswith("cortex-m"):
+            frame = 104 if args.target == "cortex-m4f" else 32
+        deepest_isr = max((r[0] for _n, r in isrs), default=0)
+        lines.append(f"  estimate: reset path {reset[0]} + deepest handler {deepest_isr} + "
+                     f"exception frame {frame} = {reset[0] + deepest_isr + frame} bytes "
+                     "(one interrupt level; nesting adds per level)")
+    if recursion:
+        lines.append("  recursion (cut, depth not bounded by this analysis): "
+                     + ", ".join(sorted(recursion)))
+    if unknown:
+        lines.append("  no stack information (counted as 0; libgcc helpers, assembly): "
+                     + ", ".join(sorted(unknown)))
+    lines.append("Calls through function pointers (the HAL ops table, callbacks) are not "
+                 "followed: a HAL call adds the port's frame (see the largest frames above).")
+    report = "\n".join(lines) + "\n"
+    with open(args.out, "w", encoding="utf-8") as f:
+        f.write(report)
+    if args.print:
+        sys.stdout.write(report)
+
+
+if __name__ == "__main__":
+    main()
