@@ -157,7 +157,7 @@ static bool tail_zero(const struct calrec_tmodel *m, unsigned from)
 /* ylim: the limit of the y format of this model (bias or scale-factor deviation). */
 static bool tmodel_ok(const struct calrec_tmodel *m, int32_t ylim)
 {
-    int64_t last;
+    int32_t last;
 
     switch (m->kind) {
     case CALREC_TM_NONE:
@@ -179,8 +179,10 @@ static bool tmodel_ok(const struct calrec_tmodel *m, int32_t ylim)
             !in_range(m->t_span, CALREC_LIM_SPAN_MIN, CALREC_LIM_SPAN_MAX)) {
             return false;
         }
-        /* 64-bit: 15 spans of 200 degC above 200 degC exceed int32 in Q16.16. */
-        last = (int64_t)m->t_ref + (int64_t)(m->n - 1) * (int64_t)m->t_span;
+        /* No overflow in int32: with the limits just checked, (n - 1) * t_span <= 15 * 200 degC
+         * = 196608000 and t_ref <= 200 degC = 13107200 in Q16.16, sum < 2^31 (and no 64-bit
+         * multiply, which Cortex-M0+ would take from libgcc). */
+        last = m->t_ref + (m->n - 1) * m->t_span;
         return last <= CALREC_LIM_T_MAX && all_in_range(m->p, (unsigned)m->n, -ylim, ylim) &&
                tail_zero(m, (unsigned)m->n);
     default:

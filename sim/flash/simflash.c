@@ -241,7 +241,7 @@ int simflash_cut_power_at(struct simflash *f, uint32_t n, enum simflash_cut_mode
     if (f == NULL) {
         return INC_ERR_NULL;
     }
-    if (n == 0u || n > UINT32_MAX - f->steps || (int)mode < 0 || mode > SIMFLASH_CUT_AFTER) {
+    if (n == 0u || n > UINT32_MAX - f->steps || (unsigned)mode > (unsigned)SIMFLASH_CUT_AFTER) {
         return INC_ERR_INVAL;
     }
     f->cut_at = f->steps + n;
@@ -268,7 +268,7 @@ int simflash_fail_op(struct simflash *f, enum simflash_op op, uint32_t n)
     if (f == NULL) {
         return INC_ERR_NULL;
     }
-    if ((int)op < 0 || op > SIMFLASH_OP_ERASE || n == 0u || n > UINT32_MAX - f->op_calls[op]) {
+    if ((unsigned)op > (unsigned)SIMFLASH_OP_ERASE || n == 0u || n > UINT32_MAX - f->op_calls[op]) {
         return INC_ERR_INVAL;
     }
     f->fail_at[op] = f->op_calls[op] + n;
