@@ -76,6 +76,37 @@ static void test_save_load_alternates(const struct fix_geometry *g)
 static void test_save_load_8(void) { test_save_load_alternates(&g8); }
 static void test_save_load_1(void) { test_save_load_alternates(&g1); }
 
+/* Reads of a load and a save with both slots intact (the figures of docs/benchmarks.md):
+ * judging an intact slot reads the header, the commit unit, the CRC-covered bytes (streamed),
+ * the stored CRC and the image; a save then reads the image back in 32-byte pieces and the
+ * commit unit. */
+static void test_steady_state_reads(const struct fix_geometry *g)
+{
+    struct calrec r, out;
+    const struct simflash_stats *st = simflash_get_stats(&fs.flash);
+    uint32_t body = ((CALREC_IMAGE_SIZE + g->prog_size - 1u) / g->prog_size) * g->prog_size;
+    uint32_t clen = g->prog_size > 4u ? g->prog_size : 4u;
+    uint32_t judge = 16u + clen + (CALREC_IMAGE_SIZE - 4u) + 4u + CALREC_IMAGE_SIZE;
+
+    setup(g);
+    fix_record(&r);
+    REQUIRE(calstore_save(&fs.store, &r, NULL) == INC_OK);
+    REQUIRE(calstore_save(&fs.store, &r, NULL) == INC_OK);
+    simflash_reset_stats(&fs.flash);
+    CHECK_OK(calstore_load(&fs.store, &r.binding, &out, NULL));
+    CHECK_EQ_INT(st->read_calls, 11);
+    CHECK_EQ_INT(st->read_bytes, 2u * judge + CALREC_IMAGE_SIZE);
+    simflash_reset_stats(&fs.flash);
+    CHECK_OK(calstore_save(&fs.store, &r, NULL));
+    CHECK_EQ_INT(st->read_calls, 10u + (body + 31u) / 32u + 1u);
+    CHECK_EQ_INT(st->read_bytes, 2u * judge + body + clen);
+    CHECK_EQ_INT(st->erases, g->slot_pages);
+    CHECK_EQ_INT(st->prog_units, body / g->prog_size + (clen + g->prog_size - 1u) / g->prog_size);
+}
+
+static void test_reads_8(void) { test_steady_state_reads(&g8); }
+static void test_reads_1(void) { test_steady_state_reads(&g1); }
+
 /* Every single-bit flip in a stored record (image, padding-free area and commit unit). */
 static void test_corrupt_every_bit(void)
 {
@@ -494,6 +525,8 @@ int main(void)
     UNIT_RUN(test_missing);
     UNIT_RUN(test_save_load_8);
     UNIT_RUN(test_save_load_1);
+    UNIT_RUN(test_reads_8);
+    UNIT_RUN(test_reads_1);
     UNIT_RUN(test_corrupt_every_bit);
     UNIT_RUN(test_wrong_version);
     UNIT_RUN(test_wrong_sensor);
