@@ -1,0 +1,100 @@
+/*
+ * sca3000_conv.c - pure SCA3000 conversions (see sca3000.h for formats, ranges and rounding).
+ *
+ * Data alignment: sensors.md 1.4 (Linux realbits 13 / shift 3 for direct reads, realbits 11 /
+ * shift 5 for the ring; temperature 9 bits at [13:5]). Sensitivity: sensors.md 1.1. Every
+ * signed value is built from unsigned fields by subtraction, never by shifting a negative
+ * number, so the results are the same on every compiler and target.
+ */
+#include "inclino/sca3000.h"
+
+/* ug per LSB: 0.75, 1, 2 and 6.25 mg (Linux scale in um/s^2 divided by 9.81). */
+static const uint32_t ug_per_lsb[4] = {750u, 1000u, 2000u, 6250u};
+
+/* num / den rounded to nearest, ties away from zero; den > 0. |num| < 2^62 here. */
+static int64_t div_round(int64_t num, int64_t den)
+{
+    const uint64_t mag = num < 0 ? (uint64_t)0 - (uint64_t)num : (uint64_t)num;
+    const uint64_t q = (mag + (uint64_t)den / 2u) / (uint64_t)den;
+    return num < 0 ? -(int64_t)q : (int64_t)q;
+}
+
+int sca3000_decode_accel(uint16_t word, int16_t *count)
+{
+    uint32_t u;
+    if (count == NULL) {
+        return INC_ERR_NULL;
+    }
+    if ((word & 0x0007u) != 0u) {
+        return INC_ERR_BUS;
+    }
+    u = (uint32_t)word >> 3;                  /* 0..8191, bit 12 is the sign */
+    *count = (int16_t)((int32_t)u - ((u & 0x1000u) != 0u ? 8192 : 0));
+    return INC_OK;
+}
+
+int16_t sca3000_decode_ring11(uint16_t word)
+{
+    const uint32_t u = (uint32_t)word >> 5;   /* 0..2047, bit 10 is the sign */
+    const int32_t s = (int32_t)u - ((u & 0x400u) != 0u ? 2048 : 0);
+    return (int16_t)(s * 4);
+}
+
+uint16_t sca3000_decode_temp(uint16_t word)
+{
+    return (uint16_t)((word >> 5) & 0x1FFu);
+}
+
+uint32_t sca3000_ug_per_lsb(enum sca3000_variant v)
+{
+    if ((unsigned)v > (unsigned)SCA3000_E05) {
+        return 0u;
+    }
+    return ug_per_lsb[v];
+}
+
+int sca3000_accel_to_ug(int32_t counts, enum sca3000_variant v, int32_t *ug)
+{
+    const uint32_t lsb = sca3000_ug_per_lsb(v);
+    if (ug == NULL) {
+        return INC_ERR_NULL;
+    }
+    if (lsb == 0u) {
+        return INC_ERR_INVAL;
+    }
+    if (counts < -4096 || counts > 4095) {
+        return INC_ERR_RANGE;
+    }
+    *ug = counts * (int32_t)lsb;              /* |.| <= 4096 * 6250 = 25.6e6 */
+    return INC_OK;
+}
+
+int sca3000_accel_to_q16_g(int32_t counts, enum sca3000_variant v, int32_t *g_q16)
+{
+    const uint32_t lsb = sca3000_ug_per_lsb(v);
+    if (g_q16 == NULL) {
+        return INC_ERR_NULL;
+    }
+    if (lsb == 0u) {
+        return INC_ERR_INVAL;
+    }
+    if (counts < -4096 || counts > 4095) {
+        return INC_ERR_RANGE;
+    }
+    /* |counts * lsb * 65536| <= 4096 * 6250 * 65536 = 1.7e12: exact in int64. */
+    *g_q16 = (int32_t)div_round((int64_t)counts * (int64_t)lsb * 65536, 1000000);
+    return INC_OK;
+}
+
+int sca3000_temp_to_q16_c(int32_t raw9, int32_t *c_q16)
+{
+    if (c_q16 == NULL) {
+        return INC_ERR_NULL;
+    }
+    if (raw9 < 0 || raw9 > 511) {
+        return INC_ERR_RANGE;
+    }
+    /* (raw - 214.6) / 1.8 degC = (10 raw - 2146) / 18; x 65536 stays below 2^24 * 18. */
+    *c_q16 = (int32_t)div_round(((int64_t)raw9 * 10 - 2146) * 65536, 18);
+    return INC_OK;
+}
