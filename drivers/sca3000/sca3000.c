@@ -99,17 +99,15 @@ static int check_pattern(struct sca3000 *dev, const uint8_t *buf, size_t n)
     return (all0 || all1) ? confirm_bus(dev) : INC_OK;
 }
 
-int sca3000_check_status(struct sca3000 *dev, uint8_t *status)
+/*
+ * Read and check STATUS. confirm_zero: 0x00 (no flag set) is also what a MISO stuck low gives;
+ * confirm it with REVID. Internal checks right after a data read skip that (the data read itself
+ * was checked); the public sca3000_check_status() does it.
+ */
+static int status_check(struct sca3000 *dev, bool confirm_zero)
 {
     uint8_t st;
-    int err;
-    if (dev == NULL) {
-        return INC_ERR_NULL;
-    }
-    if (dev->spi.bus == NULL) {
-        return INC_ERR_STATE;
-    }
-    err = read_raw(dev, SCA3000_REG_STATUS, &st, 1u);
+    int err = read_raw(dev, SCA3000_REG_STATUS, &st, 1u);
     if (err != INC_OK) {
         return err;
     }
@@ -118,10 +116,13 @@ int sca3000_check_status(struct sca3000 *dev, uint8_t *status)
         dev->bus_faults++;
         return INC_ERR_BUS;
     }
-    dev->status = st;
-    if (status != NULL) {
-        *status = st;
+    if (st == 0x00u && confirm_zero) {
+        err = confirm_bus(dev);
+        if (err != INC_OK) {
+            return err;
+        }
     }
+    dev->status = st;
     if ((st & SCA3000_STATUS_FRAME) != 0u) {
         dev->frame_errors++;
         return INC_ERR_DEVICE;
@@ -130,6 +131,22 @@ int sca3000_check_status(struct sca3000 *dev, uint8_t *status)
         return INC_ERR_DEVICE;
     }
     return INC_OK;
+}
+
+int sca3000_check_status(struct sca3000 *dev, uint8_t *status)
+{
+    int err;
+    if (dev == NULL) {
+        return INC_ERR_NULL;
+    }
+    if (!dev->ready) {
+        return INC_ERR_STATE;
+    }
+    err = status_check(dev, true);
+    if (status != NULL && (err == INC_OK || err == INC_ERR_DEVICE)) {
+        *status = dev->status;
+    }
+    return err;
 }
 
 /* Write, read back, check STATUS. */
@@ -143,14 +160,14 @@ static int write_verified(struct sca3000 *dev, uint8_t addr, uint8_t val)
     if (err == INC_OK && back != val) {
         err = (back == 0x00u || back == 0xFFu) ? confirm_bus(dev) : INC_OK;
         if (err == INC_OK) {
-            err = sca3000_check_status(dev, NULL);
+            err = status_check(dev, false);
         }
         if (err == INC_OK) {
             err = INC_ERR_DEVICE; /* the part did not take the value */
         }
     }
     if (err == INC_OK) {
-        err = sca3000_check_status(dev, NULL);
+        err = status_check(dev, false);
     }
     return err;
 }
@@ -238,11 +255,11 @@ int sca3000_init(struct sca3000 *dev, const struct sca3000_cfg *cfg)
         return INC_ERR_ID;
     }
 
-    err = sca3000_check_status(dev, NULL);
+    err = status_check(dev, false);
     if (err == INC_ERR_DEVICE && dev->status == SCA3000_STATUS_FRAME) {
         /* A frame error from before this init (power-up, another driver): it is cleared by the
          * read; a second corrupt frame now would be ours. */
-        err = sca3000_check_status(dev, NULL);
+        err = status_check(dev, false);
     }
     if (err != INC_OK) {
         return err;
@@ -259,7 +276,7 @@ int sca3000_init(struct sca3000 *dev, const struct sca3000_cfg *cfg)
     }
     err = read_raw(dev, SCA3000_REG_INT_MASK, &dev->int_mask, 1u);
     if (err == INC_OK) {
-        err = sca3000_check_status(dev, NULL);
+        err = status_check(dev, false);
     }
     if (err != INC_OK) {
         return err;
@@ -364,7 +381,7 @@ int sca3000_read_accel(struct sca3000 *dev, int16_t xyz[3])
         dev->bus_faults++;
     }
     if (err == INC_OK) {
-        err = sca3000_check_status(dev, NULL);
+        err = status_check(dev, false);
     }
     if (err != INC_OK) {
         return err;
@@ -394,7 +411,7 @@ int sca3000_read_temp(struct sca3000 *dev, uint16_t *raw9)
         err = check_pattern(dev, b, 2u);
     }
     if (err == INC_OK) {
-        err = sca3000_check_status(dev, NULL);
+        err = status_check(dev, false);
     }
     if (err != INC_OK) {
         return err;
@@ -434,7 +451,7 @@ int sca3000_unlock(struct sca3000 *dev)
     unsigned i;
     int err = ready(dev);
     if (err == INC_OK) {
-        err = sca3000_check_status(dev, NULL);
+        err = status_check(dev, false);
     }
     if (err != INC_OK || (dev->status & SCA3000_STATUS_UNLOCKED) != 0u) {
         return err;
@@ -444,10 +461,13 @@ int sca3000_unlock(struct sca3000 *dev)
         err = write_raw(dev, SCA3000_REG_UNLOCK, seq[i]);
     }
     if (err == INC_OK) {
-        err = sca3000_check_status(dev, NULL);
+        err = status_check(dev, false);
     }
     if (err == INC_OK && (dev->status & SCA3000_STATUS_UNLOCKED) == 0u) {
-        err = INC_ERR_DEVICE;
+        err = confirm_bus(dev); /* a dead bus reads "locked" too */
+        if (err == INC_OK) {
+            err = INC_ERR_DEVICE;
+        }
     }
     return err;
 }
@@ -499,7 +519,7 @@ int sca3000_ind_read(struct sca3000 *dev, uint8_t sel, uint8_t *val)
     }
     err = ind_select_read(dev, sel, &v);
     if (err == INC_OK) {
-        err = sca3000_check_status(dev, NULL);
+        err = status_check(dev, false);
     }
     if (err == INC_OK) {
         *val = v;
@@ -534,7 +554,7 @@ int sca3000_ind_write(struct sca3000 *dev, uint8_t sel, uint8_t val)
         err = read_raw(dev, SCA3000_REG_CTRL_DATA, &back, 1u);
     }
     if (err == INC_OK) {
-        err = sca3000_check_status(dev, NULL);
+        err = status_check(dev, false);
     }
     if (err == INC_OK && back != nv) {
         err = INC_ERR_DEVICE;
@@ -593,6 +613,12 @@ int sca3000_ring_count(struct sca3000 *dev, unsigned *count)
         dev->bus_faults++;
         return INC_ERR_BUS; /* more than the ring holds: not a count (e.g. MISO high) */
     }
+    if (c == 0u) {
+        err = confirm_bus(dev); /* "empty" is also what a MISO stuck low says */
+        if (err != INC_OK) {
+            return err;
+        }
+    }
     *count = c;
     return INC_OK;
 }
@@ -633,7 +659,7 @@ int sca3000_ring_read(struct sca3000 *dev, int16_t *values, size_t cap, size_t *
         }
         done += k;
     }
-    err = sca3000_check_status(dev, NULL);
+    err = status_check(dev, false);
     if (err != INC_OK) {
         return err;
     }
@@ -687,11 +713,11 @@ int sca3000_int_status(struct sca3000 *dev, uint8_t *status)
         return INC_ERR_NULL;
     }
     err = read_raw(dev, SCA3000_REG_INT_STATUS, &v, 1u);
-    if (err == INC_OK && v == 0xFFu) {
-        err = confirm_bus(dev);
+    if (err == INC_OK) {
+        err = check_pattern(dev, &v, 1u); /* 0x00 ("nothing") or 0xFF: confirm the bus */
     }
     if (err == INC_OK) {
-        err = sca3000_check_status(dev, NULL);
+        err = status_check(dev, false);
     }
     if (err == INC_OK) {
         *status = v;

@@ -25,7 +25,8 @@
  *     INC_ERR_BUS;
  *   - a data read whose bytes are all 0x00 or all 0xFF is confirmed by reading REVID again;
  *     if REVID is not the one found at init the read fails with INC_ERR_BUS;
- *   - STATUS 0xFF is a bus fault;
+ *   - STATUS 0xFF is a bus fault; where 0x00 is the plausible "nothing" answer (the public
+ *     STATUS check, BUF_COUNT, INT_STATUS, a failed unlock) REVID is read to confirm the bus;
  *   - after every data read, and after every write sequence, STATUS is read: bit0 (the part saw
  *     a corrupt SPI frame) or bit1 (EEPROM checksum error) fail the call with INC_ERR_DEVICE;
  *     sca3000_last_status() gives the STATUS byte;
@@ -197,7 +198,9 @@ struct sca3000_sample {
  * frame error), acknowledge INT_STATUS, MODE <- normal measurement, ring off, free-fall off
  * (protected bits kept), INT_MASK read. Errors: INC_ERR_NULL, INC_ERR_INVAL (config),
  * INC_ERR_UNSUPPORTED (E01), INC_ERR_BUS, INC_ERR_ID, INC_ERR_DEVICE, or the bus's own error.
- * The part's power-up time is the caller's business (not known, [U]).
+ * The part's power-up time is the caller's business (not known, [U]). Calling init again
+ * (re-binding the device) forgets when CS last rose: leave SCA3000_STALL_NS after any earlier
+ * traffic to the part.
  */
 int sca3000_init(struct sca3000 *dev, const struct sca3000_cfg *cfg);
 
@@ -212,7 +215,9 @@ int sca3000_read_burst(struct sca3000 *dev, uint8_t addr, uint8_t *buf, size_t n
 /* One register, raw (as sca3000_read_burst with n = 1). */
 int sca3000_read_reg(struct sca3000 *dev, uint8_t addr, uint8_t *val);
 
-/* Read STATUS and check it (see Integrity). *status may be NULL. */
+/* Read STATUS and check it (see Integrity); a STATUS of 0x00 is confirmed with REVID (a MISO
+ * stuck low reads 0x00 too). *status (may be NULL) gets the byte also when the result is
+ * INC_ERR_DEVICE. */
 int sca3000_check_status(struct sca3000 *dev, uint8_t *status);
 
 /* Select the measurement mode (MODE[1:0], read-modify-write, verified). INC_ERR_UNSUPPORTED
@@ -244,7 +249,8 @@ int sca3000_ind_write(struct sca3000 *dev, uint8_t sel, uint8_t val);
 int sca3000_ring_config(struct sca3000 *dev, uint8_t axes, unsigned divider);
 /* Enable (11-bit mode) or disable the ring buffer (MODE bit7, read-modify-write). */
 int sca3000_ring_enable(struct sca3000 *dev, bool on);
-/* Values stored in the ring (BUF_COUNT; INC_ERR_BUS when above the capacity). */
+/* Values stored in the ring (BUF_COUNT; INC_ERR_BUS when above the capacity; a count of 0 is
+ * confirmed with REVID). */
 int sca3000_ring_count(struct sca3000 *dev, unsigned *count);
 /*
  * Read up to cap values (BUF_COUNT tells how many there are), in the part's order (the enabled
@@ -257,7 +263,7 @@ int sca3000_ring_read(struct sca3000 *dev, int16_t *values, size_t cap, size_t *
  * INT_MASK read-modify-write keeping bits[4:2]. With an int_pin, the driver's callback is
  * attached on the active edge. */
 int sca3000_int_config(struct sca3000 *dev, uint8_t sources, bool active_high);
-/* Read INT_STATUS (this acknowledges the events). */
+/* Read INT_STATUS (this acknowledges the events); 0x00 and 0xFF are confirmed with REVID. */
 int sca3000_int_status(struct sca3000 *dev, uint8_t *status);
 /* Wait until the INT line is (or becomes) active, or deadline_ns passes (INC_ERR_TIMEOUT).
  * INC_ERR_STATE without an int_pin or before sca3000_int_config(). */
