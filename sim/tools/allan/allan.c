@@ -1,0 +1,187 @@
+/*
+ * allan.c - overlapping Allan deviation and read-offs (see sim/allan.h).
+ *
+ * The record's mean is removed before integrating: the second difference cancels a constant
+ * exactly in real arithmetic, and removing it keeps theta small, so the differences keep their
+ * precision in double over records of 10^7 samples and more.
+ */
+#include "inclino/sim/allan.h"
+
+#include <math.h>
+#include <stdlib.h>
+
+#include "inclino/error.h"
+
+static double *integrate(const double *y, size_t n, double dt_s)
+{
+    double *theta = malloc((n + 1u) * sizeof(*theta));
+    double mean = 0.0, acc = 0.0;
+    size_t k;
+    if (theta == NULL) {
+        return NULL;
+    }
+    for (k = 0; k < n; k++) {
+        mean += y[k];
+    }
+    mean /= (double)n;
+    theta[0] = 0.0;
+    for (k = 0; k < n; k++) {
+        acc += (y[k] - mean) * dt_s;
+        theta[k + 1u] = acc;
+    }
+    return theta;
+}
+
+static double avar_m(const double *theta, size_t n, double dt_s, size_t m)
+{
+    const size_t terms = n - 2u * m + 1u;
+    const double tau = (double)m * dt_s;
+    double s = 0.0;
+    size_t k;
+    for (k = 0; k < terms; k++) {
+        const double d = theta[k + 2u * m] - 2.0 * theta[k + m] + theta[k];
+        s += d * d;
+    }
+    return s / (2.0 * tau * tau * (double)terms);
+}
+
+double sim_allan_at(const double *y, size_t n, double dt_s, uint64_t m)
+{
+    double *theta, v;
+    if (y == NULL || !(dt_s > 0.0) || m < 1u || n < 3u || m > (uint64_t)((n - 1u) / 2u)) {
+        return -1.0;
+    }
+    theta = integrate(y, n, dt_s);
+    if (theta == NULL) {
+        return -1.0;
+    }
+    v = avar_m(theta, n, dt_s, (size_t)m);
+    free(theta);
+    return sqrt(v);
+}
+
+int sim_allan_compute(const double *y, size_t n, double dt_s, const struct sim_allan_opts *opts,
+                      struct sim_allan_point *pts, size_t max_pts, size_t *count)
+{
+    unsigned per_decade = 10u;
+    double min_clusters = 10.0, m_limit;
+    double *theta;
+    size_t k, out = 0, last_m = 0;
+    int err = INC_OK;
+    if (y == NULL || pts == NULL || count == NULL) {
+        return INC_ERR_NULL;
+    }
+    *count = 0;
+    if (opts != NULL) {
+        if (opts->per_decade != 0u) {
+            per_decade = opts->per_decade;
+        }
+        if (opts->min_clusters != 0.0) {
+            min_clusters = opts->min_clusters;
+        }
+    }
+    if (n < 4u || !(dt_s > 0.0) || !isfinite(dt_s) || per_decade > 100u ||
+        !(min_clusters >= 2.0) || !isfinite(min_clusters)) {
+        return INC_ERR_INVAL;
+    }
+    for (k = 0; k < n; k++) {
+        if (!isfinite(y[k])) {
+            return INC_ERR_INVAL;
+        }
+    }
+    m_limit = floor((double)n / min_clusters);
+    if (m_limit > (double)((n - 1u) / 2u)) {
+        m_limit = (double)((n - 1u) / 2u);
+    }
+    if (m_limit < 1.0) {
+        return INC_ERR_RANGE;
+    }
+    theta = integrate(y, n, dt_s);
+    if (theta == NULL) {
+        return INC_ERR_NO_SPACE;
+    }
+    for (k = 0;; k++) {
+        const double mf = floor(pow(10.0, (double)k / (double)per_decade) + 0.5);
+        size_t m;
+        if (mf > m_limit) {
+            break;
+        }
+        m = (size_t)mf;
+        if (m == last_m) {
+            continue;
+        }
+        last_m = m;
+        if (out == max_pts) {
+            err = INC_ERR_NO_SPACE;
+            break;
+        }
+        pts[out].m = m;
+        pts[out].tau_s = (double)m * dt_s;
+        pts[out].adev = sqrt(avar_m(theta, n, dt_s, m));
+        pts[out].err = pts[out].adev / sqrt(2.0 * ((double)n / (double)m - 1.0));
+        out++;
+    }
+    free(theta);
+    *count = out;
+    return err;
+}
+
+double sim_allan_interp(const struct sim_allan_point *pts, size_t count, double tau_s)
+{
+    size_t i;
+    if (pts == NULL || count == 0u || !(tau_s > 0.0)) {
+        return -1.0;
+    }
+    for (i = 0; i < count; i++) {
+        if (pts[i].tau_s == tau_s) {
+            return pts[i].adev;
+        }
+        if (i + 1u < count && pts[i].tau_s < tau_s && tau_s < pts[i + 1u].tau_s) {
+            const double f = log(tau_s / pts[i].tau_s) / log(pts[i + 1u].tau_s / pts[i].tau_s);
+            if (!(pts[i].adev > 0.0) || !(pts[i + 1u].adev > 0.0)) {
+                return -1.0;
+            }
+            return exp(log(pts[i].adev) + f * (log(pts[i + 1u].adev) - log(pts[i].adev)));
+        }
+    }
+    return -1.0;
+}
+
+int sim_allan_readoff(const struct sim_allan_point *pts, size_t count, double max_rel_err,
+                      struct sim_allan_readoff *r)
+{
+    size_t i, imin = 0, last = 0;
+    bool found = false;
+    if (pts == NULL || r == NULL) {
+        return INC_ERR_NULL;
+    }
+    if (max_rel_err == 0.0) {
+        max_rel_err = SIM_ALLAN_MIN_REL_ERR;
+    }
+    if (count == 0u || !(max_rel_err > 0.0)) {
+        return INC_ERR_INVAL;
+    }
+    for (i = 0; i < count; i++) {
+        if (!(pts[i].err <= max_rel_err * pts[i].adev)) {
+            continue;
+        }
+        if (!found || pts[i].adev < pts[imin].adev) {
+            imin = i;
+        }
+        found = true;
+        last = i;
+    }
+    if (!found) {
+        return INC_ERR_INVAL;
+    }
+    r->arw = sim_allan_interp(pts, count, 1.0);
+    r->arw_valid = r->arw >= 0.0;
+    if (!r->arw_valid) {
+        r->arw = 0.0;
+    }
+    r->adev_min = pts[imin].adev;
+    r->tau_min_s = pts[imin].tau_s;
+    r->bias_instability = r->adev_min / SIM_ALLAN_BI_FACTOR;
+    r->min_interior = imin > 0u && imin < last;
+    return INC_OK;
+}

@@ -1,0 +1,315 @@
+/*
+ * allan - overlapping Allan deviation of a gyro (or any rate) record: from a CSV file or from a
+ * simulated run of a configured error model. Prints the angle random walk (ADEV at tau = 1 s)
+ * and the bias instability (minimum / 0.664); writes the curve as CSV, SVG and a gnuplot script.
+ * docs/noise-and-allan.md has examples.
+ *
+ *   allan --csv FILE|- [--col K] [--time-col K | --rate-hz F] [--scale S] [--unit U]
+ *   allan --sim adis|separated [--seconds T] [--seed S] [--sample-hz F] [--no-quant] [--theory]
+ *   common: [--per-decade P] [--min-clusters C] [--min-rel-err E] [--out curve.csv] [--svg plot.svg]
+ *           [--gnuplot plot.gp [--png plot.png]] [--quiet]
+ *
+ * --sim adis: the x gyro of the simulated ADIS1636x/1640x (sim/noise.h presets) sampled at
+ * 819.2 SPS with no Bartlett filtering (SENS_AVG M = 0), each sample quantised to the output
+ * register (14-bit two's complement, 0.05 deg/s per LSB) unless --no-quant.
+ * --sim separated: the well-separated test part (SIM_NOISE_SEP_*), 2 SPS, no quantisation.
+ * Default lengths: 20 000 s (adis), 10^6 s (separated).
+ * Exit status: 0 ok, 1 bad usage, 2 bad input, 3 computation failed.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "inclino/error.h"
+#include "inclino/sim/allan.h"
+#include "inclino/sim/inertial.h"
+#include "inclino/sim/noise.h"
+
+#define MAX_POINTS 1024u
+#define ADIS_GYRO_LSB 0.05   /* deg/s per LSB, +-300 deg/s range (sensors.md 3.3) */
+#define ADIS_GYRO_BITS 14u
+
+struct args {
+    const char *csv, *sim, *out, *svg, *gp, *png, *unit;
+    unsigned col, per_decade;
+    int time_col;
+    double rate_hz, scale, seconds, sample_hz, min_clusters, max_rel_err;
+    unsigned long long seed;
+    int quant, theory, quiet;
+};
+
+static void usage(void)
+{
+    fprintf(stderr,
+            "usage: allan --csv FILE|- [--col K] [--time-col K | --rate-hz F] [--scale S] [--unit U]\n"
+            "       allan --sim adis|separated [--seconds T] [--seed S] [--sample-hz F]\n"
+            "             [--no-quant] [--theory]\n"
+            "       common: [--per-decade P] [--min-clusters C] [--min-rel-err E]\n"
+            "               [--out curve.csv] [--svg plot.svg]\n"
+            "               [--gnuplot plot.gp [--png plot.png]] [--quiet]\n");
+}
+
+static int num(const char *s, double *v)
+{
+    char *end;
+    *v = strtod(s, &end);
+    return (end != s && *end == '\0' && isfinite(*v)) ? 0 : -1;
+}
+
+static int parse(int argc, char **argv, struct args *a)
+{
+    int i;
+    memset(a, 0, sizeof(*a));
+    a->time_col = -1;
+    a->scale = 1.0;
+    a->quant = 1;
+    a->seed = 1;
+    a->unit = "deg/s";
+    a->png = "allan.png";
+    for (i = 1; i < argc; i++) {
+        const char *o = argv[i];
+        const char *v = i + 1 < argc ? argv[i + 1] : NULL;
+        double d = 0.0;
+        if (strcmp(o, "--no-quant") == 0) { a->quant = 0; continue; }
+        if (strcmp(o, "--theory") == 0) { a->theory = 1; continue; }
+        if (strcmp(o, "--quiet") == 0) { a->quiet = 1; continue; }
+        if (v == NULL) {
+            fprintf(stderr, "allan: %s needs a value\n", o);
+            return -1;
+        }
+        i++;
+        if (strcmp(o, "--csv") == 0) a->csv = v;
+        else if (strcmp(o, "--sim") == 0) a->sim = v;
+        else if (strcmp(o, "--out") == 0) a->out = v;
+        else if (strcmp(o, "--svg") == 0) a->svg = v;
+        else if (strcmp(o, "--gnuplot") == 0) a->gp = v;
+        else if (strcmp(o, "--png") == 0) a->png = v;
+        else if (strcmp(o, "--unit") == 0) a->unit = v;
+        else if (num(v, &d) != 0) {
+            fprintf(stderr, "allan: %s: '%s' is not a number\n", o, v);
+            return -1;
+        } else if (strcmp(o, "--col") == 0 && d >= 0 && d < 1000 && d == floor(d)) a->col = (unsigned)d;
+        else if (strcmp(o, "--time-col") == 0 && d >= 0 && d < 1000 && d == floor(d)) a->time_col = (int)d;
+        else if (strcmp(o, "--rate-hz") == 0 && d > 0) a->rate_hz = d;
+        else if (strcmp(o, "--scale") == 0 && d != 0) a->scale = d;
+        else if (strcmp(o, "--seconds") == 0 && d > 0 && d <= 1e7) a->seconds = d;
+        else if (strcmp(o, "--sample-hz") == 0 && d > 0 && d <= 1e6) a->sample_hz = d;
+        else if (strcmp(o, "--seed") == 0 && d >= 0 && d == floor(d)) a->seed = (unsigned long long)d;
+        else if (strcmp(o, "--per-decade") == 0 && d >= 1 && d <= 100 && d == floor(d)) a->per_decade = (unsigned)d;
+        else if (strcmp(o, "--min-clusters") == 0 && d >= 2) a->min_clusters = d;
+        else if (strcmp(o, "--min-rel-err") == 0 && d > 0 && d < 1) a->max_rel_err = d;
+        else {
+            fprintf(stderr, "allan: bad option or value: %s %s\n", o, v);
+            return -1;
+        }
+    }
+    if ((a->csv == NULL) == (a->sim == NULL)) {
+        fprintf(stderr, "allan: give exactly one of --csv and --sim\n");
+        return -1;
+    }
+    if (a->csv != NULL && a->time_col < 0 && a->rate_hz <= 0.0) {
+        fprintf(stderr, "allan: a CSV needs --time-col or --rate-hz\n");
+        return -1;
+    }
+    if (a->theory && a->sim == NULL) {
+        fprintf(stderr, "allan: --theory needs --sim (the configured model)\n");
+        return -1;
+    }
+    return 0;
+}
+
+/* Simulated record; fills *ax with the configuration used (for --theory). */
+static int simulate(const struct args *a, double **y, size_t *n, double *dt, struct sim_noise_axis *ax)
+{
+    struct sim_noise_cfg cfg;
+    struct sim_noise *nm;
+    double hz, secs;
+    size_t k, cnt;
+    int adis = strcmp(a->sim, "adis") == 0;
+    if (!adis && strcmp(a->sim, "separated") != 0) {
+        fprintf(stderr, "allan: --sim must be adis or separated\n");
+        return INC_ERR_INVAL;
+    }
+    memset(&cfg, 0, sizeof(cfg));
+    cfg.seed = a->seed;
+    if (adis) {
+        sim_noise_adis_gyro_axis(&cfg.ch[0]);
+    } else {
+        sim_noise_separated_axis(&cfg.ch[0]);
+    }
+    *ax = cfg.ch[0];
+    hz = a->sample_hz > 0.0 ? a->sample_hz : (adis ? 819.2 : 2.0);
+    secs = a->seconds > 0.0 ? a->seconds : (adis ? 20000.0 : 1e6);
+    cnt = (size_t)(secs * hz + 0.5);
+    if (cnt < 4u) {
+        fprintf(stderr, "allan: run too short\n");
+        return INC_ERR_INVAL;
+    }
+    nm = malloc(sizeof(*nm));
+    *y = malloc(cnt * sizeof(**y));
+    if (nm == NULL || *y == NULL || sim_noise_init(nm, &cfg) != INC_OK) {
+        free(nm);
+        free(*y);
+        *y = NULL;
+        return INC_ERR_NO_SPACE;
+    }
+    *dt = 1.0 / hz;
+    for (k = 0; k < cnt; k++) {
+        double v = sim_noise_step(nm, 0, 0.0, 25.0, *dt);
+        if (adis && a->quant) {
+            v = (double)sim_quantise(v, ADIS_GYRO_LSB, ADIS_GYRO_BITS, NULL) * ADIS_GYRO_LSB;
+        }
+        (*y)[k] = v;
+    }
+    if (adis && a->quant) {
+        ax->quantum = ADIS_GYRO_LSB;
+    }
+    free(nm);
+    *n = cnt;
+    return INC_OK;
+}
+
+int main(int argc, char **argv)
+{
+    struct args a;
+    struct sim_allan_opts opts;
+    struct sim_allan_point *pts;
+    struct sim_allan_readoff r;
+    struct sim_noise_axis ax;
+    double *y = NULL, *theory = NULL, dt = 0.0;
+    size_t n = 0, count = 0, i;
+    int err;
+    if (parse(argc, argv, &a) != 0) {
+        usage();
+        return 1;
+    }
+    if (a.csv != NULL) {
+        size_t bad = 0;
+        FILE *f = strcmp(a.csv, "-") == 0 ? stdin : fopen(a.csv, "r");
+        if (f == NULL) {
+            fprintf(stderr, "allan: cannot open %s\n", a.csv);
+            return 2;
+        }
+        err = sim_allan_read_csv(f, a.col, a.time_col, a.scale, &y, &n, &dt, &bad);
+        if (f != stdin) {
+            fclose(f);
+        }
+        if (err != INC_OK) {
+            fprintf(stderr, "allan: %s: line %zu: %s\n", a.csv, bad, inc_err_name(err));
+            return 2;
+        }
+        if (a.time_col < 0) {
+            dt = 1.0 / a.rate_hz;
+        }
+    } else {
+        err = simulate(&a, &y, &n, &dt, &ax);
+        if (err != INC_OK) {
+            return err == INC_ERR_INVAL ? 1 : 3;
+        }
+    }
+    pts = malloc(MAX_POINTS * sizeof(*pts));
+    if (pts == NULL) {
+        free(y);
+        return 3;
+    }
+    opts.per_decade = a.per_decade;
+    opts.min_clusters = a.min_clusters;
+    err = sim_allan_compute(y, n, dt, &opts, pts, MAX_POINTS, &count);
+    free(y);
+    if (err != INC_OK || count == 0u) {
+        fprintf(stderr, "allan: Allan deviation failed: %s\n", inc_err_name(err));
+        free(pts);
+        return 3;
+    }
+    if (sim_allan_readoff(pts, count, a.max_rel_err, &r) != INC_OK) {
+        fprintf(stderr, "allan: no point of the curve is certain to %.3g (relative); record "
+                        "longer or pass a larger --min-rel-err\n",
+                a.max_rel_err > 0.0 ? a.max_rel_err : SIM_ALLAN_MIN_REL_ERR);
+        free(pts);
+        return 3;
+    }
+    if (a.theory) {
+        theory = malloc(count * sizeof(*theory));
+        if (theory == NULL) {
+            free(pts);
+            return 3;
+        }
+        for (i = 0; i < count; i++) {
+            theory[i] = sim_noise_adev(&ax, pts[i].tau_s, dt);
+        }
+    }
+    printf("samples           %zu at %.6g s (%.6g s)\n", n, dt, (double)n * dt);
+    if (r.arw_valid) {
+        printf("ARW (ADEV at 1 s) %.5g %s*sqrt(s)", r.arw, a.unit);
+        if (strcmp(a.unit, "deg/s") == 0) {
+            printf(" = %.4g deg/sqrt(h)", r.arw * 60.0);
+        }
+        printf("\n");
+    } else {
+        printf("ARW (ADEV at 1 s) n/a (1 s outside the curve)\n");
+    }
+    printf("minimum           %.5g %s at tau = %.5g s%s\n", r.adev_min, a.unit, r.tau_min_s,
+           r.min_interior ? "" : " (at the end of the curve: an upper bound)");
+    printf("bias instability  %.5g %s (minimum / 0.664)", r.bias_instability, a.unit);
+    if (strcmp(a.unit, "deg/s") == 0) {
+        printf(" = %.4g deg/h", r.bias_instability * 3600.0);
+    }
+    printf("\n");
+    if (a.theory) {
+        printf("model             ADEV(1 s) %.5g, N %.5g, B %.5g, K %.5g; analytic minimum on "
+               "the grid %.5g\n", sim_noise_adev(&ax, 1.0, dt), ax.white, ax.bias_instability,
+               ax.rrw, sim_noise_adev(&ax, r.tau_min_s, dt));
+    }
+    if (!a.quiet) {
+        printf("tau_s,adev,err%s\n", a.theory ? ",theory" : "");
+        for (i = 0; i < count; i++) {
+            if (a.theory) {
+                printf("%.6g,%.6g,%.3g,%.6g\n", pts[i].tau_s, pts[i].adev, pts[i].err, theory[i]);
+            } else {
+                printf("%.6g,%.6g,%.3g\n", pts[i].tau_s, pts[i].adev, pts[i].err);
+            }
+        }
+    }
+    err = 0;
+    if (a.out != NULL) {
+        FILE *f = fopen(a.out, "w");
+        if (f == NULL || sim_allan_write_csv(f, pts, count, theory) != INC_OK) {
+            fprintf(stderr, "allan: cannot write %s\n", a.out);
+            err = 3;
+        }
+        if (f != NULL) {
+            fclose(f);
+        }
+    }
+    if (a.svg != NULL) {
+        FILE *f = fopen(a.svg, "w");
+        if (f == NULL || sim_allan_write_svg(f, pts, count, theory, &r,
+                                             a.sim != NULL ? "Allan deviation (simulated)"
+                                                           : "Allan deviation",
+                                             a.unit) != INC_OK) {
+            fprintf(stderr, "allan: cannot write %s\n", a.svg);
+            err = 3;
+        }
+        if (f != NULL) {
+            fclose(f);
+        }
+    }
+    if (a.gp != NULL) {
+        FILE *f = fopen(a.gp, "w");
+        if (a.out == NULL) {
+            fprintf(stderr, "allan: --gnuplot needs --out (the script plots that CSV)\n");
+            err = 1;
+        } else if (f == NULL || sim_allan_write_gnuplot(f, a.out, a.png, a.theory != 0,
+                                                        "Allan deviation", a.unit) != INC_OK) {
+            fprintf(stderr, "allan: cannot write %s\n", a.gp);
+            err = 3;
+        }
+        if (f != NULL) {
+            fclose(f);
+        }
+    }
+    free(theory);
+    free(pts);
+    return err;
+}
