@@ -14,6 +14,15 @@
 
 #define DT_ADIS (1.0 / 819.2)
 
+/* Samples per statistics check: fewer under QEMU (soft-float doubles on Cortex-M3 are slow);
+ * the tolerances below scale with the count (6 sigma of the estimate), so both stay tight. */
+#ifdef __arm__
+#define STAT_N 10000
+#else
+#define STAT_N 40000
+#endif
+#define SD_TOL (6.0 / sqrt(2.0 * STAT_N))   /* relative sd of a sample sd, times 6 */
+
 static void test_config_rejected(void)
 {
     struct sim_noise n;
@@ -114,8 +123,8 @@ static void test_reproducible(void)
     CHECK_NEAR(oa.supply_v, 5.0, 0.0);
 }
 
-/* White noise: per-sample sd = N / sqrt(dt). 40 000 samples: the sd estimate's own sd is 0.35 %,
- * so 2 % is about 6 sigma; the mean's sd is 0.005 * sd. */
+/* White noise: per-sample sd = N / sqrt(dt) within 6 sigma of the estimate (2.1 % on the host,
+ * 4.2 % under QEMU); the mean within 4 sigma. */
 static void test_white_density(void)
 {
     static struct sim_noise n;
@@ -123,7 +132,7 @@ static void test_white_density(void)
     const double dt = 0.01, nd = 0.2;
     double s = 0.0, s2 = 0.0, sd;
     int k;
-    const int cnt = 40000;
+    const int cnt = STAT_N;
     memset(&cfg, 0, sizeof(cfg));
     cfg.ch[0].white = nd;
     cfg.seed = 3;
@@ -134,7 +143,7 @@ static void test_white_density(void)
         s2 += v * v;
     }
     sd = sqrt(s2 / cnt - (s / cnt) * (s / cnt));
-    CHECK_NEAR(sd, nd / sqrt(dt), 0.02 * nd / sqrt(dt));
+    CHECK_NEAR(sd, nd / sqrt(dt), SD_TOL * nd / sqrt(dt));
     CHECK_NEAR(s / cnt, 0.0, 4.0 * (nd / sqrt(dt)) / sqrt((double)cnt));
     /* no correlated bias with white noise only */
     CHECK_NEAR(sim_noise_bias_now(&n, 0), 0.0, 0.0);
@@ -148,7 +157,7 @@ static void test_random_walk(void)
     const double dt = 0.1, k_rrw = 0.01;
     double prev, s2 = 0.0, sd;
     int k;
-    const int cnt = 40000;
+    const int cnt = STAT_N;
     memset(&cfg, 0, sizeof(cfg));
     cfg.ch[3].rrw = k_rrw;
     cfg.seed = 4;
@@ -163,7 +172,7 @@ static void test_random_walk(void)
         prev = b;
     }
     sd = sqrt(s2 / cnt);
-    CHECK_NEAR(sd, k_rrw * sqrt(dt), 0.02 * k_rrw * sqrt(dt));
+    CHECK_NEAR(sd, k_rrw * sqrt(dt), SD_TOL * k_rrw * sqrt(dt));
 }
 
 /* Quantisation: every output is a whole multiple of the step (half away from zero), and with
@@ -175,7 +184,7 @@ static void test_quantum(void)
     const double q = 0.25;
     double s = 0.0;
     int k, whole = 1;
-    const int cnt = 20000;
+    const int cnt = STAT_N / 2;
     memset(&cfg, 0, sizeof(cfg));
     cfg.ch[1].white = 0.2;
     cfg.ch[1].quantum = q;
@@ -216,7 +225,7 @@ static void test_gm_layout(void)
     CHECK_NEAR(tc[11], 2000.0, 1e-9);
     CHECK_NEAR(tc[1] / tc[0], tc[11] / tc[10], 1e-9);
     CHECK(sigma > 0.0);
-    for (t = 5.0; t <= 500.0; t *= 1.1) {
+    for (t = 5.0; t <= 500.0; t *= 1.25) {
         CHECK_NEAR(sim_noise_adev(&ax, t, DT_ADIS), 0.664 * 0.01, 0.03 * 0.664 * 0.01);
     }
     /* outside the band it rolls off (a single component's slope +1/2 far below tc_min) */
@@ -276,7 +285,7 @@ static void test_adis_preset(void)
     CHECK_NEAR(sim_noise_adev(&ax, 0.15, DT_ADIS), 0.080, 0.004);   /* seed: about 0.08 */
     CHECK_NEAR(sim_noise_adev(&ax, 30.0, DT_ADIS), 0.0074, 0.0002); /* seed: about 0.008 */
     CHECK_NEAR(sim_noise_adev(&ax, 100.0, DT_ADIS), 0.0061, 0.0002);
-    for (t = 1.0; t < 10000.0; t *= 1.02) {
+    for (t = 10.0; t < 1000.0; t *= 1.03) {
         const double v = sim_noise_adev(&ax, t, DT_ADIS);
         if (v < best) {
             best = v;
