@@ -73,8 +73,12 @@ static void on_end(void *model, unsigned words, unsigned flags, uint64_t t)
     }
     if (words == 0 || (flags & (FRAME_BROKEN | SIM_SPI_FLAG(SIM_VIOL_BUSY))) ||
         (c->cfg.ops->busy != NULL && c->cfg.ops->busy(c->cfg.model, t))) {
+        const bool busy = c->cfg.ops->busy != NULL && c->cfg.ops->busy(c->cfg.model, t);
         if (words != 0) {
             c->dropped++;
+        }
+        if ((flags & FRAME_BROKEN) && !busy && c->cfg.frame_error != NULL) {
+            c->cfg.frame_error(c->cfg.model, flags, t);
         }
         c->next_valid = false;
         return;

@@ -56,6 +56,12 @@ struct sim_adis_cfg {
     void *model;
     struct sim_violation_log *log;
     uint64_t seed;                      /* garbage generator */
+    /* Optional (NULL: none). Called with `model` when a frame is dropped because it broke a
+     * timing or framing rule (flags: the frame's SIM_SPI_FLAG bits), not because the part was
+     * busy: a part with an "SPI communication failure" status bit sets it here. A config
+     * member rather than an op so that existing positional sim_adis_ops initialisers stay
+     * valid under -Wmissing-field-initializers. */
+    void (*frame_error)(void *model, unsigned flags, uint64_t t_ns);
 };
 
 struct sim_adis_core {
