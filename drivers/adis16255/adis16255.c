@@ -242,11 +242,10 @@ static int wait_ready(struct adis16255 *st)
 {
     uint64_t deadline;
     uint16_t last = 0;
-    int err;
     hal_delay_until(st->cfg.hal, st->busy_until_ns);
     deadline = now(st) + (uint64_t)ADIS16255_BUSY_TIMEOUT_MS * NS_PER_MS;
     for (;;) {
-        err = alive(st, &last);
+        const int err = alive(st, &last);
         if (err != INC_ERR_BUSY) {
             return err;
         }

@@ -321,7 +321,6 @@ static void apply_rate(struct sim_adis16255 *m)
 static void command_done(void *arg, uint64_t t)
 {
     struct sim_adis16255 *m = arg;
-    unsigned i;
     m->ev_cmd = 0;
     if (m->autonull_active) {
         m->autonull_active = false;
@@ -339,6 +338,7 @@ static void command_done(void *arg, uint64_t t)
     }
     if (m->reset_pending) {
         /* The part restarts from its flash copy; volatile registers and outputs clear. */
+        unsigned i;
         m->reset_pending = false;
         for (i = 1; i < SIM_ADIS16255_REGS; i++) {
             m->reg[i] = nonvolatile(i * 2u) ? m->flash[i] : 0u;
@@ -359,7 +359,6 @@ static void command_done(void *arg, uint64_t t)
 static void command(struct sim_adis16255 *m, uint8_t v, uint64_t t)
 {
     uint64_t dur = 0;
-    unsigned i;
     m->commands++;
     if (v & 0x01u) { /* autonull: average the next 2^M samples */
         m->autonull_active = true;
@@ -374,6 +373,7 @@ static void command(struct sim_adis16255 *m, uint8_t v, uint64_t t)
         dur += m->cfg.times.factory_restore_ns;
     }
     if (v & 0x08u) { /* flash update */
+        unsigned i;
         for (i = 1; i < SIM_ADIS16255_REGS; i++) {
             if (nonvolatile(i * 2u)) {
                 m->flash[i] = m->reg[i];
