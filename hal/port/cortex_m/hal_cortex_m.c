@@ -269,12 +269,10 @@ static int none_irq_enable(void *ctx, hal_pin_t pin, enum hal_edge edge, bool en
 
 const struct hal_cm_gpio_ops hal_cm_gpio_none = {none_write, none_read, none_irq_enable};
 
+#if !defined(__ARM_ARCH_6M__)
 /* Start DWT CYCCNT; INC_ERR_UNSUPPORTED when absent or not counting (QEMU reads it as 0). */
 static int cm_dwt_start(void)
 {
-#if defined(__ARM_ARCH_6M__)
-    return INC_ERR_UNSUPPORTED; /* ARMv6-M has no cycle counter */
-#else
     volatile uint32_t spin;
     uint32_t c0;
     CM_DEMCR |= CM_DEMCR_TRCENA;
@@ -291,8 +289,8 @@ static int cm_dwt_start(void)
         return INC_ERR_UNSUPPORTED;
     }
     return INC_OK;
-#endif
 }
+#endif
 
 int hal_cm_init(struct hal_cm *cm, const struct hal_cm_config *cfg, struct hal *hal)
 {
@@ -312,10 +310,14 @@ int hal_cm_init(struct hal_cm *cm, const struct hal_cm_config *cfg, struct hal *
         return err;
     }
     if (cfg->timebase == HAL_CM_TIME_DWT) {
+#if defined(__ARM_ARCH_6M__)
+        return INC_ERR_UNSUPPORTED; /* ARMv6-M has no cycle counter */
+#else
         err = cm_dwt_start();
         if (err != INC_OK) {
             return err;
         }
+#endif
     }
 
     if (hal_cm_systick_owner == cm) {
