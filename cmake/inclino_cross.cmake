@@ -74,6 +74,11 @@ if(NOT _inclino_rc EQUAL 0 OR NOT EXISTS "${INCLINO_LIBGCC}")
   message(FATAL_ERROR "cannot locate libgcc for ${INCLINO_TARGET} (${INCLINO_LIBGCC})")
 endif()
 
+# libgcc last on every cross link line, after every library and their transitive dependencies
+# (64-bit division, shifts, multiplies on the M0+...). The Cortex-M test boards get it from
+# gcc's own link line as well; -nostdlib images and rv32 have only this.
+set(CMAKE_C_STANDARD_LIBRARIES "-lgcc")
+
 # Map file, ELF suffix, size report after the link. PRINT: also print the report to the build log.
 function(_inclino_cross_postlink exe)
   cmake_parse_arguments(P "PRINT" "" "" ${ARGN})
@@ -99,8 +104,8 @@ function(inclino_link_qemu_board exe)
     # newlib nano with semihosting (rdimon); the startup is ours (-nostartfiles), see rt.h.
     target_link_options(${exe} PRIVATE -specs=rdimon.specs -nostartfiles)
   else()
-    # No C library on rv32: the board's shim (tests/support/board/rv32) and libgcc.
-    target_link_libraries(${exe} PRIVATE inclino_rt gcc)
+    # No C library on rv32: the board's shim (tests/support/board/rv32) and the mem* of rt.
+    target_link_libraries(${exe} PRIVATE inclino_rt)
   endif()
   target_link_options(${exe} PRIVATE -T${INCLINO_QEMU_BOARD_LD} -L${INCLINO_RT_LD_DIR})
   set_property(TARGET ${exe} APPEND PROPERTY LINK_DEPENDS
@@ -153,7 +158,7 @@ INCLUDE @SECTIONS@
     target_link_libraries(${img} PRIVATE ${whole})
     add_dependencies(${img} ${I_WHOLE_LIBS})
   endif()
-  target_link_libraries(${img} PRIVATE ${I_LIBS} inclino_rt gcc)
+  target_link_libraries(${img} PRIVATE ${I_LIBS} inclino_rt)
   target_compile_options(${img} PRIVATE ${INCLINO_FREESTANDING_OPTIONS})
   target_compile_definitions(${img} PRIVATE INCLINO_FREESTANDING=1)
   target_link_options(${img} PRIVATE -nostdlib -T${ld} -L${INCLINO_RT_LD_DIR}
