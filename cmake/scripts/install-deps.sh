@@ -1,0 +1,26 @@
+#!/bin/sh
+# install-deps.sh - install everything Inclino's README commands need on Debian 12 (bookworm).
+#
+# Host build and tools: cmake make gcc g++ libeigen3-dev python3 (scripts, size reports)
+# Cross builds:         gcc-arm-none-eabi libnewlib-arm-none-eabi gcc-riscv64-unknown-elf
+# Tests under QEMU:     qemu-system-arm (Cortex-M) qemu-system-misc (riscv32)
+# Checks and tools:     cppcheck valgrind (instruction counts) sigrok-cli (decoding VCDs)
+#
+# --no-install-recommends keeps QEMU from pulling in its GUI and firmware packages.
+# Uses sudo only when not already root.
+set -eu
+
+packages="cmake make gcc g++ python3 libeigen3-dev \
+    gcc-arm-none-eabi libnewlib-arm-none-eabi gcc-riscv64-unknown-elf \
+    qemu-system-arm qemu-system-misc \
+    cppcheck valgrind sigrok-cli"
+
+if [ "$(id -u)" -eq 0 ]; then
+    sudo=""
+else
+    sudo="sudo"
+fi
+
+$sudo apt-get update
+# shellcheck disable=SC2086 # the package list is meant to split into words
+$sudo env DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends $packages
