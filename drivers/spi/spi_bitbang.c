@@ -58,6 +58,9 @@ static int bb_transfer(void *ctx, struct spi_dev *dev, const uint16_t *tx, uint1
         if (f == 0u || cs == SPI_CS_TOGGLE) {
             if (dev->released_once) {
                 hal_delay_until(hal, dev->cs_release_ns + t->stall_ns);
+            } else if (bb->released_any && bb->last_cs == dev->cfg.cs) {
+                /* A device bound again to the same CS: the part still needs its stall. */
+                hal_delay_until(hal, bb->last_release_ns + t->stall_ns);
             }
             hal_pin_write(hal, dev->cfg.cs, false);
             lead = t->cs_setup_ns;
@@ -98,6 +101,9 @@ static int bb_transfer(void *ctx, struct spi_dev *dev, const uint16_t *tx, uint1
             hal_pin_write(hal, dev->cfg.cs, true);
             dev->cs_release_ns = hal_now_ns(hal);
             dev->released_once = true;
+            bb->last_cs = dev->cfg.cs;
+            bb->last_release_ns = dev->cs_release_ns;
+            bb->released_any = true;
         }
     }
     bb->mosi_level = mosi_level;
@@ -129,5 +135,8 @@ int spi_bitbang_init(struct spi_bitbang *bb, const struct spi_bitbang_cfg *cfg)
     bb->sclk_level = false;
     bb->mosi_level = false;
     bb->pins_known = false;
+    bb->released_any = false;
+    bb->last_cs = HAL_PIN_NONE;
+    bb->last_release_ns = 0;
     return INC_OK;
 }

@@ -157,6 +157,14 @@ static void test_bus_time(void)
     /* The stall is also kept between separate transfers. */
     CHECK_OK(spi_xfer1(&dev, 0x1234, NULL));
     CHECK_EQ_INT(cs_fall[NWORDS] - cs_rise[NWORDS - 1], T);
+    /* A device initialised again on the same CS still gets the stall. */
+    {
+        struct spi_dev again;
+        REQUIRE(spi_dev_init(&again, &board.spi.bus, &dev.cfg) == 0);
+        CHECK_OK(spi_xfer1(&again, 0x4321, NULL));
+        CHECK_EQ_INT(cs_fall[NWORDS + 1] - cs_rise[NWORDS], T);
+        dev = again;
+    }
     /* Held CS: frames follow each other after max(gap, half period). */
     n_fall = n_rise = 0;
     board.clk.now_ns += 100000u;

@@ -48,6 +48,9 @@ struct spi_bitbang {
     bool sclk_level;
     bool mosi_level;
     bool pins_known;         /* sclk_level/mosi_level reflect the pins */
+    bool released_any;       /* last_cs/last_release_ns are meaningful */
+    hal_pin_t last_cs;       /* the CS that rose last, and when: a device initialised again */
+    uint64_t last_release_ns;/* on the same CS still gets its stall */
 };
 
 /*
