@@ -108,7 +108,7 @@ set(INCLINO_FREESTANDING_OPTIONS -ffreestanding -fno-tree-loop-distribute-patter
   -Wdouble-promotion -Wfloat-equal -Wcast-align -Wpointer-arith)
 
 function(inclino_add_subdirectories)
-  file(GLOB children LIST_DIRECTORIES true RELATIVE "${CMAKE_CURRENT_SOURCE_DIR}"
+  file(GLOB children LIST_DIRECTORIES true CONFIGURE_DEPENDS RELATIVE "${CMAKE_CURRENT_SOURCE_DIR}"
        "${CMAKE_CURRENT_SOURCE_DIR}/*")
   list(SORT children)
   foreach(child IN LISTS children)
