@@ -48,9 +48,15 @@ static uint16_t on_word(void *model, uint16_t mosi, unsigned index, unsigned fla
                 sim_violation_report(c->cfg.log, SIM_VIOL_SCLK_FAST, c->cfg.name, t,
                                      c->slave.frame_min_period_ns, c->cfg.burst_min_period_ns);
                 c->burst_len = 0; /* the part cannot keep up: garbage */
+                if (c->cfg.frame_error != NULL) {
+                    c->cfg.frame_error(c->cfg.model, 0, t);
+                }
             }
-            /* The rest of the burst is held to the burst clock limit. */
-            bt.min_period_ns = c->cfg.burst_min_period_ns;
+            /* The rest of the burst is held to the burst clock limit, or to the mode's own
+             * limit when that is stricter (low-power mode). */
+            if (bt.min_period_ns < c->cfg.burst_min_period_ns) {
+                bt.min_period_ns = c->cfg.burst_min_period_ns;
+            }
             sim_spi_slave_set_timing(&c->slave, &bt);
         }
     }
@@ -69,6 +75,9 @@ static void on_end(void *model, unsigned words, unsigned flags, uint64_t t)
         sim_spi_slave_set_timing(&c->slave, &c->cfg.timing);
         c->bursting = false;
         c->next_valid = false;
+        if ((flags & FRAME_BROKEN) && c->cfg.frame_error != NULL) {
+            c->cfg.frame_error(c->cfg.model, flags, t);
+        }
         return;
     }
     if (words == 0 || (flags & (FRAME_BROKEN | SIM_SPI_FLAG(SIM_VIOL_BUSY))) ||

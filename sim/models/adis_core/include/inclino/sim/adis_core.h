@@ -15,7 +15,8 @@
  *     answers garbage, ignores commands and each such frame is reported as SIM_VIOL_BUSY.
  *   - Burst (ADIS1636x/1640x): DIN = burst_cmd starts, in the same CS period, a stream of
  *     output words; SCLK must not exceed burst_min_period_ns for the whole frame (checked with
- *     the slave's frame_min_period_ns: a faster burst is reported and returns garbage).
+ *     the slave's frame_min_period_ns: a faster burst is reported and returns garbage). A
+ *     stricter limit already in force (low-power mode) still applies during the burst.
  */
 #ifndef INCLINO_SIM_ADIS_CORE_H
 #define INCLINO_SIM_ADIS_CORE_H
@@ -58,7 +59,8 @@ struct sim_adis_cfg {
     uint64_t seed;                      /* garbage generator */
     /* Optional (NULL: none). Called with `model` when a frame is dropped because it broke a
      * timing or framing rule (flags: the frame's SIM_SPI_FLAG bits), not because the part was
-     * busy: a part with an "SPI communication failure" status bit sets it here. A config
+     * busy: a part with an "SPI communication failure" status bit sets it here. Also called
+     * for a burst clocked faster than burst_min_period_ns (flags 0). A config
      * member rather than an op so that existing positional sim_adis_ops initialisers stay
      * valid under -Wmissing-field-initializers. */
     void (*frame_error)(void *model, unsigned flags, uint64_t t_ns);
