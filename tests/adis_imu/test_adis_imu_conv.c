@@ -202,7 +202,7 @@ static void test_tables(void)
     static const uint16_t ids[6] = {0x3FE8, 0x3FEA, 0x3FEC, 0x3FED, 0x4010, 0x4015};
     static const char *const names[6] = {"ADIS16360", "ADIS16362", "ADIS16364",
                                          "ADIS16365", "ADIS16400", "ADIS16405"};
-    const struct adis_imu_reg_desc *m, *d;
+    const struct adis_imu_reg_desc *d;
     size_t n = 0, i;
     unsigned v, f;
     for (v = 0; v < 6u; v++) {
@@ -222,7 +222,7 @@ static void test_tables(void)
     CHECK(adis_imu_variant_info(ADIS_IMU_ANY) == NULL);
     CHECK(strcmp(adis_imu_variant_name(ADIS_IMU_UNKNOWN), "unknown") == 0);
     for (f = 0; f < 2u; f++) {
-        m = adis_imu_reg_map((enum adis_imu_family)f, &n);
+        const struct adis_imu_reg_desc *m = adis_imu_reg_map((enum adis_imu_family)f, &n);
         REQUIRE(m != NULL);
         CHECK_EQ_INT(n, f == 0u ? 35 : 39); /* sensors.md §3.2 */
         for (i = 0; i < n; i++) {
