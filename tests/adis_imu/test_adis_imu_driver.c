@@ -496,6 +496,13 @@ static void test_flash_update_restore_reset(void)
     CHECK_OK(adis_imu_get_gyro_offset(&fx.imu, 1, &off));
     CHECK_EQ_INT(off, 0);
     CHECK_EQ_INT(fx.part.flash_writes, 1);
+    /* AUX DAC latch takes no time. */
+    CHECK_EQ_INT(adis_imu_command_ms(&fx.imu, ADIS_IMU_CMD_AUX_DAC_LATCH), 0);
+    CHECK_OK(adis_imu_command(&fx.imu, ADIS_IMU_CMD_AUX_DAC_LATCH));
+    CHECK(!adis_imu_busy(&fx.imu));
+    CHECK_EQ_INT(fx.part.commands, 4);
+    CHECK_EQ_INT(adis_imu_command_ms(&fx.imu, ADIS_IMU_CMD_SW_RESET), 170);
+    CHECK_EQ_INT(adis_imu_command_ms(&fx.imu, ADIS_IMU_CMD_PRECISION_AUTONULL), 30000);
     CHECK_EQ_INT(fx_violations(), 0);
 }
 
