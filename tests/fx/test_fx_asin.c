@@ -4,11 +4,11 @@
  * Bound asserted: 0.81 LSB Q16 (atan2 budget + < 0.002 LSB from the rounded cosine leg), and the
  * requirement 0.001 deg = 65.5 LSB.
  *
- * Sweeps (host / QEMU):
- *   stride:  every STRIDE-th code of [-2^30, 2^30], STRIDE = 257 / 2^18+3 (8.4 M / 8.2 k codes);
- *   ends:    the last END codes before +1 and after -1, exhaustively, END = 2^16 / 2^11
+ * Sweeps (full = host preset / reduced = QEMU and host-sanitize):
+ *   stride:  every STRIDE-th code of [-2^30, 2^30], STRIDE = 257 / 16411 (8.4 M / 131 k codes);
+ *   ends:    the last END codes before +1 and after -1, exhaustively, END = 2^16 on both
  *            (where d asin / dx is largest: 1 LSB Q30 near 1 moves asin by up to 0.0025 deg);
- *   centre:  every code in [-CENTRE, CENTRE], CENTRE = 2^16 / 2^10;
+ *   centre:  every code in [-CENTRE, CENTRE], CENTRE = 2^16 / 2^13;
  *   clamp:   codes outside [-1, 1] give exactly +-90 deg.
  * The reference is asin(x / 2^30) in double: x / 2^30 is exact, and libm's asin is within an ulp
  * even at the ends (the reference does not go through 1 - x^2).
@@ -18,9 +18,9 @@
 #define FX_ASIN_BOUND_LSB 0.81
 #define REQUIREMENT_LSB (0.001 * FXT_Q16)
 
-#define STRIDE FX_DENSITY(257L, (1L << 18) + 3L)
-#define END FX_DENSITY(1L << 16, 1L << 11)
-#define CENTRE FX_DENSITY(1L << 16, 1L << 10)
+#define STRIDE FX_DENSITY(257L, 16411L)
+#define END FX_DENSITY(1L << 16, 1L << 16)
+#define CENTRE FX_DENSITY(1L << 16, 1L << 13)
 
 static unsigned long odd_bad;
 

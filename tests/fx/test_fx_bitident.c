@@ -9,7 +9,7 @@
  * If a deliberate change of an algorithm changes the outputs, the accuracy tests must still
  * pass and the constant is updated in the same commit, with the reason.
  */
-#include "fx_test.h"
+#include "fx_test_int.h"
 
 #define FX_BITIDENT_N 4096
 #define FX_BITIDENT_CRC 0xa1fe51d9u /* the test prints the value it computes */

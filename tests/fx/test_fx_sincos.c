@@ -4,12 +4,12 @@
  * Bound asserted: FX_SINCOS_BOUND_LSB = 0.57 LSB Q30 (0.5 output rounding + 0.065 internal,
  * docs/fixed-point.md); the project aim 2e-9 (2.15 LSB) is asserted as well.
  *
- * Sweeps (host / QEMU):
- *   one turn: every TURN_STEP-th Q16 angle of [0, 360) deg, TURN_STEP = 1 / 4099 (the host
+ * Sweeps (full = host preset / reduced = QEMU and host-sanitize):
+ *   one turn: every TURN_STEP-th Q16 angle of [0, 360) deg, TURN_STEP = 1 / 193 (the host
  *             covers all 23 592 960 angles of a turn exhaustively, i.e. every angle there is,
  *             because the reduction below is exact);
  *   whole int32 range: every WIDE_STEP-th angle from INT32_MIN to INT32_MAX, WIDE_STEP =
- *             997 / 2^20+7: the result must equal the one of the reduced angle bit for bit,
+ *             997 / 2^16+1: the result must equal the one of the reduced angle bit for bit,
  *             and match libm on the reduced angle;
  *   exact values at multiples of 30 and 45 deg, odd/even symmetry, sin^2 + cos^2.
  * The reference angle a * pi / (180 * 2^16) is computed in double from the exact integer
@@ -20,8 +20,8 @@
 #define FX_SINCOS_BOUND_LSB 0.57
 #define AIM_LSB (2e-9 * FXT_Q30)
 
-#define TURN_STEP FX_DENSITY(1L, 4099L)
-#define WIDE_STEP FX_DENSITY(997L, (1L << 20) + 7L)
+#define TURN_STEP FX_DENSITY(1L, 193L)
+#define WIDE_STEP FX_DENSITY(997L, (1L << 16) + 1L)
 
 static double rad_of(int64_t a_q16)
 {

@@ -7,13 +7,13 @@
  * which prove "exact" (floor) and |error| <= 0.5 LSB (rounded). The double reference is only used
  * to print the measured error.
  *
- * Densities (host / QEMU):
- *   fx_isqrt32 exhaustive n < 2^24 / 2^14; every k^2 - 1, k^2, k^2 + k, k^2 + k + 1 for all
- *              k < 2^16 / every 61st k; every power of two +-3; random 2^20 / 2^13.
+ * Densities (full = host preset / reduced = QEMU and host-sanitize):
+ *   fx_isqrt32 exhaustive n < 2^24 / 2^19; every k^2 - 1, k^2, k^2 + k, k^2 + k + 1 for all
+ *              k < 2^16 (both); every power of two +-3; random 2^20 / 2^16.
  *   fx_isqrt64 and fx_isqrt64_round: every power of two +-3; k^2 boundaries for the last 2^16 /
- *              2^10 k below 2^32 and random k; random n 2^20 / 2^13.
- *   fx_sqrt_q16 / fx_sqrt_q30: stride over [0, 2^31) of 521 / 2^19+1 codes, plus all codes
- *              < 2^16 / 2^10, plus random 2^20 / 2^13.
+ *              2^14 k below 2^32 and random k; random n 2^20 / 2^16.
+ *   fx_sqrt_q16 / fx_sqrt_q30: every 521st / 32771st code of [0, 2^31), plus all codes
+ *              < 2^16 / 2^14, plus random 2^20 / 2^16.
  */
 #include "fx_test.h"
 
@@ -37,15 +37,14 @@ static int round64_bad(uint64_t n)
 
 static void test_isqrt32(void)
 {
-    const uint32_t n_exh = FX_DENSITY(1u << 24, 1u << 14);
-    const uint32_t k_step = FX_DENSITY(1u, 61u);
-    const long n_rand = FX_DENSITY(1L << 20, 1L << 13);
+    const uint32_t n_exh = FX_DENSITY(1u << 24, 1u << 19);
+    const long n_rand = FX_DENSITY(1L << 20, 1L << 16);
     unsigned long bad = 0, total = 0;
     uint32_t n, k, st = 7u;
     unsigned e;
     long i;
     for (n = 0; n < n_exh; n++, total++) bad += !floor_ok(n, fx_isqrt32(n));
-    for (k = 1; k < 65536u; k += k_step) {
+    for (k = 1; k < 65536u; k++) {
         uint32_t sq = k * k, c[4];
         int j;
         c[0] = sq - 1u;
@@ -77,8 +76,8 @@ static void test_isqrt32(void)
 
 static void test_isqrt64(void)
 {
-    const uint32_t k_last = FX_DENSITY(1u << 16, 1u << 10);
-    const long n_rand = FX_DENSITY(1L << 20, 1L << 13);
+    const uint32_t k_last = FX_DENSITY(1u << 16, 1u << 14);
+    const long n_rand = FX_DENSITY(1L << 20, 1L << 16);
     unsigned long bad = 0, badr = 0, total = 0;
     uint32_t st = 11u;
     unsigned e;
@@ -130,9 +129,9 @@ static void test_isqrt64(void)
 /* One Q sqrt over a stride, all small codes and random codes. shift = 16 or 30. */
 static void sweep_q(const char *name, fx_q16_t (*fn)(int32_t), unsigned shift)
 {
-    const uint32_t stride = FX_DENSITY(521u, (1u << 19) + 1u);
-    const uint32_t small = FX_DENSITY(1u << 16, 1u << 10);
-    const long n_rand = FX_DENSITY(1L << 20, 1L << 13);
+    const uint32_t stride = FX_DENSITY(521u, 32771u);
+    const uint32_t small = FX_DENSITY(1u << 16, 1u << 14);
+    const long n_rand = FX_DENSITY(1L << 20, 1L << 16);
     struct fxt_err err = {0};
     unsigned long bad = 0;
     uint32_t x, st = 5u;

@@ -1,0 +1,85 @@
+/*
+ * fx_test_int.h - the integer-only part of the tests/fx helpers: sweep density, a deterministic
+ * generator and exact integer rounding references (written independently of firmware/fx).
+ * No libm and no floating point, so the tests that use only this header also run on rv32imac,
+ * whose test board has no C library beyond a printf shim.
+ */
+#ifndef INCLINO_FX_TEST_INT_H
+#define INCLINO_FX_TEST_INT_H
+
+#include <stdint.h>
+#include <stdio.h>
+
+#include "inclino/fx.h"
+#include "unit.h"
+
+/* Sweep density. The host preset runs the full dense sweeps. An emulated MCU (QEMU, soft-float
+ * libm) uses the reduced counts so that each test stays well under ~20 s; so does the
+ * host-sanitize build (ASan + UBSan are ~5x slower; its job is finding undefined behaviour on
+ * the same code paths, the bounds are proven by the dense host run).
+ * FX_DENSITY(full, reduced) picks one; docs/fixed-point.md lists both per test. */
+#if defined(__arm__) || defined(__riscv)
+#define FX_TEST_ON_TARGET 1
+#else
+#define FX_TEST_ON_TARGET 0
+#endif
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_UNDEFINED__)
+#define FX_TEST_SANITIZED 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(undefined_behavior_sanitizer)
+#define FX_TEST_SANITIZED 1
+#endif
+#endif
+#ifndef FX_TEST_SANITIZED
+#define FX_TEST_SANITIZED 0
+#endif
+#define FX_TEST_REDUCED (FX_TEST_ON_TARGET || FX_TEST_SANITIZED)
+#define FX_DENSITY(full, reduced) (FX_TEST_REDUCED ? (reduced) : (full))
+
+/* xorshift32: the same sequence on every target. */
+static inline uint32_t fxt_rand(uint32_t *state)
+{
+    uint32_t x = *state;
+    x ^= x << 13;
+    x ^= x >> 17;
+    x ^= x << 5;
+    *state = x;
+    return x;
+}
+
+/* A random int32 with a random magnitude (2^0 .. 2^31) and sign, so that every scale is hit;
+ * includes INT32_MIN and INT32_MAX. */
+static inline int32_t fxt_rand_scaled(uint32_t *state)
+{
+    uint32_t r = fxt_rand(state);
+    unsigned sh = fxt_rand(state) % 32u;
+    int32_t m = (int32_t)((r >> 1) >> sh); /* [0, 2^31 - 1] */
+    return (r & 1u) ? -m - 1 : m;
+}
+
+/* Bit pattern -> int32 (two's complement), defined. */
+static inline int32_t fxt_i32(uint32_t u)
+{
+    return (u & 0x80000000u) ? (int32_t)(u - 0x80000000u) + INT32_MIN : (int32_t)u;
+}
+
+/* Exact round(n / d), ties away from zero, for d > 0, by a route independent of firmware/fx:
+ * floor division with a non-negative remainder, then compare 2*rem with d. |n| < 2^62. */
+static inline int64_t fxt_round_div(int64_t n, int64_t d)
+{
+    int64_t q = n / d, rem = n % d;
+    if (rem < 0) {
+        q -= 1;
+        rem += d;
+    }
+    /* n/d = q + rem/d with 0 <= rem < d */
+    if (2 * rem > d || (2 * rem == d && n >= 0)) q += 1;
+    return q;
+}
+
+static inline int32_t fxt_sat(int64_t v)
+{
+    return v > INT32_MAX ? INT32_MAX : (v < INT32_MIN ? INT32_MIN : (int32_t)v);
+}
+
+#endif /* INCLINO_FX_TEST_INT_H */
