@@ -1,0 +1,128 @@
+/*
+ * bench_fx_cm.c - instruction counts of firmware/fx on Cortex-M under QEMU (not a test).
+ *
+ * QEMU does not model the DWT cycle counter, but with -icount shift=S,align=off its virtual
+ * time advances 2^S ns per executed instruction, and the mps2-an385/an386 SysTick, clocked by the
+ * 25 MHz processor clock, then counts instructions * 2^S / 40 (toolchain-notes.md). Each function
+ * runs BENCH_CM_N times over prepared inputs; the same loop around an empty noinline function of
+ * the same shape is subtracted, so the figure is the function's own instructions per call
+ * (callee-side, without the caller's loop, argument set-up and call). Instructions, not cycles.
+ * Run with tests/fx/bench_fx_cm.sh <cross build dir>.
+ */
+#include <stdio.h>
+
+#include "inclino/fx.h"
+
+#define BENCH_CM_N 256
+#define SYST_CSR (*(volatile uint32_t *)0xE000E010u)
+#define SYST_RVR (*(volatile uint32_t *)0xE000E014u)
+#define SYST_CVR (*(volatile uint32_t *)0xE000E018u)
+
+static int32_t in_a[BENCH_CM_N], in_b[BENCH_CM_N], in_deg[BENCH_CM_N], in_ratio[BENCH_CM_N];
+static int32_t in_acc[BENCH_CM_N], in_pos[BENCH_CM_N];
+static uint32_t in_u32[BENCH_CM_N];
+static volatile int32_t sink;
+
+static uint32_t rnd(uint32_t *s)
+{
+    uint32_t x = *s;
+    x ^= x << 13;
+    x ^= x >> 17;
+    x ^= x << 5;
+    return *s = x;
+}
+
+static int32_t i32(uint32_t u)
+{
+    return (u & 0x80000000u) ? (int32_t)(u - 0x80000000u) + INT32_MIN : (int32_t)u;
+}
+
+/* Baselines: same signatures, no work. */
+__attribute__((noinline)) static int32_t empty2(int32_t a, int32_t b)
+{
+    __asm__ volatile("" ::: "memory");
+    return a ^ b;
+}
+
+__attribute__((noinline)) static int32_t empty1(int32_t a)
+{
+    __asm__ volatile("" ::: "memory");
+    return a;
+}
+
+static void ticks_reset(void)
+{
+    SYST_CSR = 0;
+    SYST_RVR = 0x00FFFFFFu;
+    SYST_CVR = 0;
+    SYST_CSR = 5u; /* ENABLE | CLKSOURCE = processor clock, no interrupt */
+}
+
+static uint32_t ticks_now(void)
+{
+    return SYST_CVR;
+}
+
+#define MEASURE2(name, fn, A, B)                                                     \
+    do {                                                                             \
+        uint32_t t0, t1, t2, t3;                                                     \
+        int i_;                                                                      \
+        ticks_reset();                                                               \
+        t0 = ticks_now();                                                            \
+        for (i_ = 0; i_ < BENCH_CM_N; i_++) sink += fn((A)[i_], (B)[i_]);            \
+        t1 = ticks_now();                                                            \
+        t2 = ticks_now();                                                            \
+        for (i_ = 0; i_ < BENCH_CM_N; i_++) sink += empty2((A)[i_], (B)[i_]);        \
+        t3 = ticks_now();                                                            \
+        printf("BENCH %s %lu %lu\n", name, (unsigned long)((t0 - t1) & 0xFFFFFFu),   \
+               (unsigned long)((t2 - t3) & 0xFFFFFFu));                              \
+    } while (0)
+
+#define MEASURE1(name, fn, A)                                                        \
+    do {                                                                             \
+        uint32_t t0, t1, t2, t3;                                                     \
+        int i_;                                                                      \
+        ticks_reset();                                                               \
+        t0 = ticks_now();                                                            \
+        for (i_ = 0; i_ < BENCH_CM_N; i_++) sink += (int32_t)fn((A)[i_]);            \
+        t1 = ticks_now();                                                            \
+        t2 = ticks_now();                                                            \
+        for (i_ = 0; i_ < BENCH_CM_N; i_++) sink += empty1((int32_t)(A)[i_]);        \
+        t3 = ticks_now();                                                            \
+        printf("BENCH %s %lu %lu\n", name, (unsigned long)((t0 - t1) & 0xFFFFFFu),   \
+               (unsigned long)((t2 - t3) & 0xFFFFFFu));                              \
+    } while (0)
+
+static int32_t div_q16(int32_t a, int32_t b)
+{
+    int32_t q = 0;
+    (void)fx_div_q16(a, b, &q);
+    return q;
+}
+
+int main(void)
+{
+    uint32_t s = 0x2468ACEu;
+    int i;
+    for (i = 0; i < BENCH_CM_N; i++) {
+        in_a[i] = fx_asr32(i32(rnd(&s)), rnd(&s) % 24u);
+        in_b[i] = fx_asr32(i32(rnd(&s)), rnd(&s) % 24u) | 1;
+        in_u32[i] = rnd(&s);
+        in_deg[i] = fx_asr32(i32(rnd(&s)), 6);
+        in_ratio[i] = fx_asr32(i32(rnd(&s)), 1);
+        in_acc[i] = fx_asr32(i32(rnd(&s)), 14);
+        in_pos[i] = in_a[i] & INT32_MAX;
+    }
+    printf("BENCH_N %d\n", BENCH_CM_N);
+    MEASURE2("fx_mul_q16", fx_mul_q16, in_a, in_b);
+    MEASURE2("fx_mul_q30", fx_mul_q30, in_a, in_b);
+    MEASURE2("fx_div_q16", div_q16, in_a, in_b); /* includes the small wrapper */
+    MEASURE1("fx_isqrt32", fx_isqrt32, in_u32);
+    MEASURE1("fx_sqrt_q16", fx_sqrt_q16, in_pos);
+    MEASURE1("fx_sqrt_q30", fx_sqrt_q30, in_pos);
+    MEASURE2("fx_atan2_deg", fx_atan2_deg, in_acc, in_b);
+    MEASURE1("fx_asin_deg", fx_asin_deg, in_ratio);
+    MEASURE1("fx_sin_deg", fx_sin_deg, in_deg);
+    MEASURE1("fx_cos_deg", fx_cos_deg, in_deg);
+    return 0;
+}
