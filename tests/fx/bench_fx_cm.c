@@ -19,7 +19,8 @@
 #define SYST_CVR (*(volatile uint32_t *)0xE000E018u)
 
 static int32_t in_a[BENCH_CM_N], in_b[BENCH_CM_N], in_deg[BENCH_CM_N], in_ratio[BENCH_CM_N];
-static int32_t in_acc[BENCH_CM_N], in_pos[BENCH_CM_N];
+static int32_t in_acc[BENCH_CM_N], in_pos[BENCH_CM_N], in_rpos[BENCH_CM_N];
+static int32_t in_acc2[BENCH_CM_N];
 static uint32_t in_u32[BENCH_CM_N];
 static volatile int32_t sink;
 
@@ -112,15 +113,17 @@ int main(void)
         in_ratio[i] = fx_asr32(i32(rnd(&s)), 1);
         in_acc[i] = fx_asr32(i32(rnd(&s)), 14);
         in_pos[i] = in_a[i] & INT32_MAX;
+        in_rpos[i] = in_ratio[i] & INT32_MAX;
     }
+    for (i = 0; i < BENCH_CM_N; i++) in_acc2[i] = in_acc[(i + 1) % BENCH_CM_N]; /* as bench_fx.c */
     printf("BENCH_N %d\n", BENCH_CM_N);
     MEASURE2("fx_mul_q16", fx_mul_q16, in_a, in_b);
     MEASURE2("fx_mul_q30", fx_mul_q30, in_a, in_b);
-    MEASURE2("fx_div_q16", div_q16, in_a, in_b); /* includes the small wrapper */
+    MEASURE2("fx_div", div_q16, in_a, in_b); /* fx_div(a, b, 16, &q) plus a 4-argument wrapper */
     MEASURE1("fx_isqrt32", fx_isqrt32, in_u32);
     MEASURE1("fx_sqrt_q16", fx_sqrt_q16, in_pos);
-    MEASURE1("fx_sqrt_q30", fx_sqrt_q30, in_pos);
-    MEASURE2("fx_atan2_deg", fx_atan2_deg, in_acc, in_b);
+    MEASURE1("fx_sqrt_q30", fx_sqrt_q30, in_rpos);
+    MEASURE2("fx_atan2_deg", fx_atan2_deg, in_acc, in_acc2);
     MEASURE1("fx_asin_deg", fx_asin_deg, in_ratio);
     MEASURE1("fx_sin_deg", fx_sin_deg, in_deg);
     MEASURE1("fx_cos_deg", fx_cos_deg, in_deg);
