@@ -321,9 +321,10 @@ static void chan_format(const struct adis_imu *s, unsigned ch, unsigned *bits, b
     }
 }
 
-static void sample_clear(struct adis_imu_sample *out, uint64_t t)
+static void sample_clear(const struct adis_imu *s, struct adis_imu_sample *out, uint64_t t)
 {
     unsigned i;
+    out->gyro_range = (uint8_t)adis_imu_gyro_range(s);
     for (i = 0; i < (unsigned)ADIS_IMU_CH_COUNT; i++) {
         out->raw[i] = 0;
         out->counts[i] = 0;
@@ -432,7 +433,7 @@ int adis_imu_read_burst(struct adis_imu *s, struct adis_imu_sample *out)
         return err;
     }
     n = s->info->burst_words;
-    sample_clear(out, hal_now_ns(s->cfg.hal));
+    sample_clear(s, out, hal_now_ns(s->cfg.hal));
     timing_for(s->low_power, true, &t);
     err = spi_dev_set_timing(&s->dev, &t);
     if (err == INC_OK) {
@@ -491,7 +492,7 @@ int adis_imu_read_channels(struct adis_imu *s, uint16_t mask, struct adis_imu_sa
     if (n == 0u) {
         return INC_ERR_INVAL;
     }
-    sample_clear(out, hal_now_ns(s->cfg.hal));
+    sample_clear(s, out, hal_now_ns(s->cfg.hal));
     err = adis_read_regs(&s->dev, addrs, v, n);
     if (err != INC_OK) {
         return err;
@@ -527,7 +528,7 @@ int adis_imu_to_phys(const struct adis_imu *s, const struct adis_imu_sample *in,
     }
     for (i = 0; i < 3u; i++) {
         out->gyro_dps[i] = adis_imu_gyro_dps_q16(in->counts[ADIS_IMU_CH_GYRO_X + i],
-                                                 adis_imu_gyro_range(s));
+                                                 (enum adis_imu_range)in->gyro_range);
         out->accel_g[i] = adis_imu_accel_g_q16(in->counts[ADIS_IMU_CH_ACCEL_X + i],
                                                s->info->accel_lsb_ug);
         out->magn_gauss[i] = adis_imu_magn_gauss_q16(in->counts[ADIS_IMU_CH_MAGN_X + i]);

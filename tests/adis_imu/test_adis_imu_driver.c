@@ -452,12 +452,17 @@ static void test_filter_and_range(void)
     CHECK_EQ_INT(s.counts[ADIS_IMU_CH_GYRO_X], -240);
     CHECK_OK(adis_imu_to_phys(&fx.imu, &s, &p));
     CHECK_EQ_INT(p.gyro_dps[0], -3 * 65536);
+    CHECK_EQ_INT(s.gyro_range, ADIS_IMU_RANGE_75);
     /* +-150 with M = 2 (shrinking taps: the range byte goes first, no illegal step). */
     CHECK_OK(adis_imu_set_filter(&fx.imu, 2, ADIS_IMU_RANGE_150));
     CHECK_EQ_HEX(fx.part.reg[0x38 >> 1], 0x0202);
     fx_set_input_settled(&in);
     CHECK_OK(adis_imu_read_burst(&fx.imu, &s));
     CHECK_EQ_INT(s.counts[ADIS_IMU_CH_GYRO_X], -120);
+    /* a sample keeps the scale it was read with: converted after another range change */
+    CHECK_OK(adis_imu_set_filter(&fx.imu, 4, ADIS_IMU_RANGE_75));
+    CHECK_OK(adis_imu_to_phys(&fx.imu, &s, &p));
+    CHECK_EQ_INT(p.gyro_dps[0], -3 * 65536);
     CHECK_ERR(adis_imu_set_filter(&fx.imu, 1, ADIS_IMU_RANGE_150), INC_ERR_INVAL);
     CHECK_ERR(adis_imu_set_filter(&fx.imu, 7, ADIS_IMU_RANGE_300), INC_ERR_INVAL);
     CHECK_ERR(adis_imu_set_filter(&fx.imu, 2, (enum adis_imu_range)3), INC_ERR_INVAL);

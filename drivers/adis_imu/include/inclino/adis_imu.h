@@ -375,6 +375,7 @@ struct adis_imu_sample {
     uint16_t valid;                    /* read, ND set, no EA, no bus fault */
     uint16_t stale;                    /* read with ND clear (no new data since last read) */
     uint16_t diag;                     /* DIAG_STAT read because EA was set (else 0) */
+    uint8_t gyro_range;                /* enum adis_imu_range in force when it was read */
     uint64_t t_ns;                     /* HAL time when the read began */
 };
 
@@ -466,7 +467,8 @@ int adis_imu_read_burst(struct adis_imu *s, struct adis_imu_sample *out);
  */
 int adis_imu_read_channels(struct adis_imu *s, uint16_t mask, struct adis_imu_sample *out);
 
-/* Convert the valid channels of a sample to physical units (gyro range from SENS_AVG). */
+/* Convert the valid channels of a sample to physical units (gyro scale: the range recorded in
+ * the sample, i.e. SENS_AVG as it was when the sample was read). */
 int adis_imu_to_phys(const struct adis_imu *s, const struct adis_imu_sample *in,
                      struct adis_imu_phys *out);
 
