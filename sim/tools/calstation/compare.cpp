@@ -1,0 +1,110 @@
+// compare.cpp - see compare.hpp.
+#include "inclino/calstation/compare.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <map>
+
+namespace calstation {
+
+std::string compare_part(const SimPart &part, const CompareConfig &cfg, std::vector<CompareAxis> &out)
+{
+    SimConfig sc;
+    sc.part = part;
+    sc.schedule = Schedule::Calibration;
+    sc.cycles = cfg.cycles;
+    sc.noise_seed = cfg.noise_seed;
+    const Station cal = simulate_station(sc);
+    sc.schedule = Schedule::Validation;
+    sc.cycles = cfg.validation_cycles;
+    sc.noise_seed = cfg.noise_seed + 1000;
+    const Station val = simulate_station(sc);
+
+    std::vector<BlockMeas> cb, vb;
+    std::string e = block_measurements(cal, cb);
+    if (e.empty()) e = block_measurements(val, vb);
+    if (!e.empty()) return e;
+    const auto cs = soak_points(cb), vs = soak_points(vb);
+    const TemperatureFits tf = fit_temperature(cb, cs, cal.t_ref_c);
+    const std::string name = part.paper ? "A" : "seed " + std::to_string(part.curve_seed);
+    for (int a = 0; a < 3; a++) {
+        CompareAxis ca;
+        ca.part = name;
+        ca.axis = a;
+        for (int k = -1; k < TemperatureFits::kKinds; k++) {
+            const TFit *fb = k >= 0 ? &tf.bias[k][a] : nullptr, *fs = k >= 0 ? &tf.scale[k][a] : nullptr;
+            CompareCell &b = ca.bias[k + 1], &s = ca.scale[k + 1];
+            b.ok = !fb || fb->ok;
+            s.ok = !fs || fs->ok;
+            const TModel *mb = fb && fb->ok ? &fb->model : nullptr;
+            const TModel *ms = fs && fs->ok ? &fs->model : nullptr;
+            const Spread in = spread(cb, cs, a, mb, ms), ho = spread(vb, vs, a, mb, ms);
+            b.in_sample = in.bias_mean_mg;
+            b.in_all = in.bias_all_mg;
+            b.held_out = ho.bias_mean_mg;
+            s.in_sample = in.scale_mean_ppm;
+            s.in_all = in.scale_all_ppm;
+            s.held_out = ho.scale_mean_ppm;
+        }
+        out.push_back(ca);
+    }
+    return "";
+}
+
+std::string format_compare(const std::vector<CompareAxis> &rows)
+{
+    static const char *const ax[3] = {"x", "y", "z"};
+    std::string o;
+    char b[256];
+    for (int q = 0; q < 2; q++) {
+        o += q ? "\nScale factor, (Kmax-Kmin)/Kmean*1e6/span in ppm/degC (paper: 151.6 -> 45.89 linear -> 11.8 Lorentz)\n"
+               : "Bias, Bmax-Bmin in mg (paper: 14 -> 6.91 linear -> 1.3 Lorentz)\n";
+        o += "worst axis per part; in-sample soak-point means (paper's definition) / every soak / held out at -15..55 degC\n\n";
+        o += "| part | raw | linear | 3-point parabola | Lorentz | PWL (10 degC knots) | Lorentz + cubic (best) |\n";
+        o += "|---|---|---|---|---|---|---|\n";
+        std::map<std::string, std::array<CompareCell, 1 + TemperatureFits::kKinds>> worst;
+        std::vector<std::string> order;
+        for (const auto &r : rows) {
+            if (!worst.count(r.part)) order.push_back(r.part);
+            auto &w = worst[r.part];
+            const auto &cells = q ? r.scale : r.bias;
+            for (size_t k = 0; k < cells.size(); k++) {
+                w[k].ok = (w[k].ok || k == 0 || true) && cells[k].ok;
+                w[k].in_sample = std::max(w[k].in_sample, cells[k].in_sample);
+                w[k].in_all = std::max(w[k].in_all, cells[k].in_all);
+                w[k].held_out = std::max(w[k].held_out, cells[k].held_out);
+            }
+        }
+        for (const auto &p : order) {
+            o += "| " + p + " |";
+            for (const auto &c : worst[p]) {
+                if (!c.ok) {
+                    o += " n/a |";
+                    continue;
+                }
+                std::snprintf(b, sizeof b, q ? " %.2f / %.2f / %.2f |" : " %.3f / %.3f / %.3f |", c.in_sample, c.in_all, c.held_out);
+                o += b;
+            }
+            o += "\n";
+        }
+    }
+    o += "\nPer axis (in-sample means / held out):\n\n| part | axis | quantity | raw | linear | 3-point | Lorentz | PWL | Lorentz + cubic |\n|---|---|---|---|---|---|---|---|---|\n";
+    for (const auto &r : rows) {
+        for (int q = 0; q < 2; q++) {
+            std::snprintf(b, sizeof b, "| %s | %s | %s |", r.part.c_str(), ax[r.axis], q ? "scale ppm/degC" : "bias mg");
+            o += b;
+            for (const auto &c : (q ? r.scale : r.bias)) {
+                if (!c.ok) {
+                    o += " n/a |";
+                    continue;
+                }
+                std::snprintf(b, sizeof b, q ? " %.2f / %.2f |" : " %.3f / %.3f |", c.in_sample, c.held_out);
+                o += b;
+            }
+            o += "\n";
+        }
+    }
+    return o;
+}
+
+} // namespace calstation

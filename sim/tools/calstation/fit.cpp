@@ -1,0 +1,626 @@
+// fit.cpp - see fit.hpp.
+#include "inclino/calstation/fit.hpp"
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <map>
+#include <numeric>
+#include <set>
+
+namespace calstation {
+
+namespace {
+
+const char *const kAxis[3] = {"x", "y", "z"};
+
+// Record limits (calrec.h), in physical units.
+constexpr double kLimOffsetG = 0.5;
+constexpr double kLimGainMin = 0.75, kLimGainMax = 1.25;
+constexpr double kLimOffDiag = 0.125;
+constexpr double kLimC01 = 0.0625, kLimC23 = 0.25;
+constexpr double kLimTBiasG = 0.5;
+constexpr double kLimTScale = 0.125;
+constexpr double kLimGyroOffset = 30.0;
+constexpr double kSoakGapC = 2.0;
+
+// a with `prec` significant digits (g) or, for prec < 0, -prec decimals (f).
+std::string num(double a, int prec)
+{
+    char b[64];
+    if (prec >= 0) std::snprintf(b, sizeof b, "%.*g", prec, a);
+    else std::snprintf(b, sizeof b, "%.*f", -prec, a);
+    return b;
+}
+
+bool is_face(const Row &r, int axis, int sign)
+{
+    return r.kind == RowKind::Acc && r.u[axis] * sign > 0.999;
+}
+
+double mean_of(const std::vector<double> &v)
+{
+    return v.empty() ? 0.0 : std::accumulate(v.begin(), v.end(), 0.0) / v.size();
+}
+
+// Temperature model of B(T) or K(T) shifted/scaled into the record's deviation form.
+TModel to_deviation(const TModel &m, double ref, bool relative)
+{
+    TModel d = m;
+    std::vector<int> lin; // indices of the parameters the model is linear in
+    switch (m.kind) {
+    case TKind::None: return d;
+    case TKind::Linear: lin = {0, 1}; break;
+    case TKind::Parabola: lin = {0, 1, 2}; break;
+    case TKind::Lorentz: lin = {0, 1}; break;
+    case TKind::LorentzCubic: lin = {0, 1, 4, 5, 6}; break;
+    case TKind::Pwl:
+        for (int k = 0; k < m.n; k++) lin.push_back(k);
+        break;
+    }
+    // The constant part: p0 for every kind but PWL, where every knot carries it.
+    const bool pwl = m.kind == TKind::Pwl;
+    if (relative) {
+        for (int k : lin) d.p[k] /= ref;
+        if (pwl) for (int k = 0; k < m.n; k++) d.p[k] -= 1.0;
+        else d.p[0] -= 1.0;
+    } else {
+        if (pwl) for (int k = 0; k < m.n; k++) d.p[k] -= ref;
+        else d.p[0] -= ref;
+    }
+    return d;
+}
+
+std::string check_tmodel(const TModel &m, double ylim, const std::string &what)
+{
+    auto bad = [&](const std::string &s) { return "coefficient out of range: " + what + " " + s; };
+    int np = 0;
+    switch (m.kind) {
+    case TKind::None: return "";
+    case TKind::Linear: np = 2; break;
+    case TKind::Parabola: np = 3; break;
+    case TKind::Lorentz: np = 2; break;
+    case TKind::LorentzCubic: np = 7; break;
+    case TKind::Pwl: np = m.n; break;
+    }
+    for (int k = 0; k < np; k++) {
+        if (m.kind != TKind::Pwl && (m.kind == TKind::Lorentz || m.kind == TKind::LorentzCubic) &&
+            (k == 2 || k == 3)) {
+            continue;
+        }
+        if (!(std::fabs(m.p[k]) <= ylim)) {
+            return bad("parameter p" + std::to_string(k) + " = " + num(m.p[k], 6) +
+                       " (limit +-" + num(ylim, 6) + ")");
+        }
+    }
+    if (m.kind == TKind::Lorentz || m.kind == TKind::LorentzCubic) {
+        if (!(m.p[2] >= 1.0 && m.p[2] <= 400.0)) return bad("Lorentz width " + num(m.p[2], 6) + " degC (limit 1..400)");
+        if (!(m.p[3] >= -100.0 && m.p[3] <= 200.0)) return bad("Lorentz centre " + num(m.p[3], 6) + " degC (limit -100..200)");
+    }
+    if (m.kind != TKind::Lorentz) {
+        if (!(m.t_ref >= -100.0 && m.t_ref <= 200.0)) return bad("t_ref " + num(m.t_ref, 6));
+        if (!(m.t_span >= 1.0 && m.t_span <= 200.0)) return bad("t_span " + num(m.t_span, 6) + " degC (limit 1..200)");
+    }
+    return "";
+}
+
+} // namespace
+
+bool parse_tchoice(const std::string &s, TChoice &c)
+{
+    static const std::map<std::string, TChoice> m = {
+        {"best", TChoice::Best},       {"none", TChoice::None},   {"linear", TChoice::Linear},
+        {"parabola", TChoice::Parabola}, {"three-point", TChoice::Parabola},
+        {"lorentz", TChoice::Lorentz}, {"pwl", TChoice::Pwl},     {"lorentz-cubic", TChoice::LorentzCubic}};
+    const auto it = m.find(s);
+    if (it == m.end()) return false;
+    c = it->second;
+    return true;
+}
+
+const char *tchoice_name(TChoice c)
+{
+    switch (c) {
+    case TChoice::Best: return "best";
+    case TChoice::None: return "none";
+    case TChoice::Linear: return "linear";
+    case TChoice::Parabola: return "three-point parabola";
+    case TChoice::Lorentz: return "lorentz";
+    case TChoice::Pwl: return "pwl";
+    case TChoice::LorentzCubic: return "lorentz+cubic";
+    }
+    return "?";
+}
+
+const char *TemperatureFits::name(int k)
+{
+    static const char *const n[kKinds] = {"linear", "3-point", "lorentz", "pwl", "lorentz+cubic"};
+    return n[k];
+}
+
+std::string block_measurements(const Station &st, std::vector<BlockMeas> &out)
+{
+    out.clear();
+    std::map<long, std::vector<const Row *>> by_block;
+    for (const auto &r : st.rows) {
+        if (r.kind == RowKind::Acc) by_block[r.block].push_back(&r);
+    }
+    for (const auto &kv : by_block) {
+        BlockMeas b;
+        b.block = kv.first;
+        std::vector<double> temps;
+        for (int a = 0; a < 3; a++) {
+            std::vector<double> pos, neg;
+            int lp = 0, ln = 0;
+            for (const Row *r : kv.second) {
+                if (is_face(*r, a, +1)) { pos.push_back(r->v[a] * st.acc_lsb_g); lp = r->line; temps.push_back(r->temp_c); }
+                if (is_face(*r, a, -1)) { neg.push_back(r->v[a] * st.acc_lsb_g); ln = r->line; temps.push_back(r->temp_c); }
+            }
+            if (pos.empty() || neg.empty()) continue;
+            const double ap = mean_of(pos), an = mean_of(neg);
+            if (!(ap > an)) {
+                return "degenerate data: axis " + std::string(kAxis[a]) + ", block " +
+                       std::to_string(b.block) + ": the +1 g face (line " + std::to_string(lp) +
+                       ") reads " + num(ap, -4) + " g, not above the -1 g face (line " +
+                       std::to_string(ln) + ", " + num(an, -4) +
+                       " g): +1 g and -1 g swapped (or the axis is dead)";
+            }
+            b.have[a] = true;
+            // Seed 000: offset = (A+ + A-)/2, gain = (A+ - A-)/2. Seed 000 prints the gain as
+            // 0.5 * (A+ - A-)/2; that extra 0.5 is a misprint (seed-notes.md).
+            b.bias[a] = 0.5 * (ap + an);
+            b.scale[a] = 0.5 * (ap - an);
+        }
+        if (b.have[0] || b.have[1] || b.have[2]) {
+            b.t = mean_of(temps);
+            out.push_back(b);
+        }
+    }
+    return "";
+}
+
+std::vector<std::vector<size_t>> soak_points(const std::vector<BlockMeas> &b)
+{
+    std::vector<size_t> idx(b.size());
+    for (size_t i = 0; i < idx.size(); i++) idx[i] = i;
+    std::sort(idx.begin(), idx.end(), [&](size_t x, size_t y) { return b[x].t < b[y].t; });
+    std::vector<std::vector<size_t>> s;
+    for (size_t k = 0; k < idx.size(); k++) {
+        if (k == 0 || b[idx[k]].t - b[idx[k - 1]].t > kSoakGapC) s.emplace_back();
+        s.back().push_back(idx[k]);
+    }
+    return s;
+}
+
+Spread spread(const std::vector<BlockMeas> &b, const std::vector<std::vector<size_t>> &soaks,
+              int a, const TModel *bm, const TModel *sm)
+{
+    Spread r;
+    double blo = 1e300, bhi = -1e300, mlo = 1e300, mhi = -1e300;
+    double klo = 1e300, khi = -1e300, ksum = 0.0, kmlo = 1e300, kmhi = -1e300, kmsum = 0.0;
+    double tlo = 1e300, thi = -1e300;
+    int nk = 0, nm = 0;
+    for (const auto &s : soaks) {
+        double bs = 0.0, ks = 0.0, ts = 0.0;
+        int n = 0;
+        for (size_t i : s) {
+            if (!b[i].have[a]) continue;
+            const double bb = b[i].bias[a] - (bm ? bm->eval(b[i].t) : 0.0);
+            const double kk = b[i].scale[a] / (sm ? sm->eval(b[i].t) : 1.0);
+            blo = std::min(blo, bb);
+            bhi = std::max(bhi, bb);
+            klo = std::min(klo, kk);
+            khi = std::max(khi, kk);
+            ksum += kk;
+            nk++;
+            bs += bb;
+            ks += kk;
+            ts += b[i].t;
+            n++;
+        }
+        if (!n) continue;
+        mlo = std::min(mlo, bs / n);
+        mhi = std::max(mhi, bs / n);
+        kmlo = std::min(kmlo, ks / n);
+        kmhi = std::max(kmhi, ks / n);
+        kmsum += ks / n;
+        nm++;
+        tlo = std::min(tlo, ts / n);
+        thi = std::max(thi, ts / n);
+    }
+    if (nm < 1) return r;
+    // Seed 002 eq. (8)-(15): B = Bmax - Bmin; dK = (Kmax - Kmin) / Kmean * 1e6 / span, with the
+    // span of the soak temperatures (80 degC in the paper).
+    const double span = std::max(thi - tlo, 1e-9);
+    r.bias_mean_mg = (mhi - mlo) * 1e3;
+    r.bias_all_mg = (bhi - blo) * 1e3;
+    r.scale_mean_ppm = (kmhi - kmlo) / (kmsum / nm) * 1e6 / span;
+    r.scale_all_ppm = (khi - klo) / (ksum / nk) * 1e6 / span;
+    return r;
+}
+
+TemperatureFits fit_temperature(const std::vector<BlockMeas> &b,
+                                const std::vector<std::vector<size_t>> &soaks, double t_ref)
+{
+    TemperatureFits tf;
+    for (int a = 0; a < 3; a++) {
+        std::vector<TPoint> bp, sp, bmean, smean;
+        for (const auto &s : soaks) {
+            double bs = 0.0, ks = 0.0, ts = 0.0;
+            int n = 0;
+            for (size_t i : s) {
+                if (!b[i].have[a]) continue;
+                bp.push_back({b[i].t, b[i].bias[a]});
+                sp.push_back({b[i].t, b[i].scale[a]});
+                bs += b[i].bias[a];
+                ks += b[i].scale[a];
+                ts += b[i].t;
+                n++;
+            }
+            if (n) {
+                bmean.push_back({ts / n, bs / n});
+                smean.push_back({ts / n, ks / n});
+            }
+        }
+        // The Lorentz height limit: the record's y-format limit (bias in g; the scale factor's
+        // height becomes a relative deviation of the same order, checked again at the end).
+        tf.bias[0][a] = fit_linear(bp);
+        tf.scale[0][a] = fit_linear(sp);
+        tf.bias[1][a] = fit_three_point(bmean, t_ref);
+        tf.scale[1][a] = fit_three_point(smean, t_ref);
+        // The Lorentz height is bounded by the record's limit of the deviation it becomes:
+        // bias in g directly; the scale factor's height is divided by the reference scale
+        // factor (about 1), so its bound keeps a 4 % margin below the 0.125 limit.
+        double kmin = 1.0;
+        for (const auto &q : sp) kmin = std::min(kmin, q.y);
+        const double hs = 0.12 * kmin;
+        tf.bias[2][a] = fit_lorentz(bp, kLimTBiasG);
+        tf.scale[2][a] = fit_lorentz(sp, hs);
+        // PWL: uniform knots over the soak range at the most common soak spacing (the median
+        // of consecutive differences: 10 degC for seed 002's schedule, which is not upset by an
+        // extra ambient point), at most kTParams knots.
+        if (bmean.size() >= 2) {
+            std::vector<double> d;
+            for (size_t i = 1; i < bmean.size(); i++) d.push_back(bmean[i].t - bmean[i - 1].t);
+            std::sort(d.begin(), d.end());
+            const double t0 = bmean.front().t, range = bmean.back().t - t0;
+            const double med = d[d.size() / 2];
+            const int n = static_cast<int>(std::clamp<long>(std::lround(range / med) + 1, 2, kTParams));
+            const double dt = range / (n - 1);
+            tf.bias[3][a] = fit_pwl(bp, t0, dt, n);
+            tf.scale[3][a] = fit_pwl(sp, t0, dt, n);
+        } else {
+            tf.bias[3][a].message = tf.scale[3][a].message = "PWL fit needs 2 soak points";
+        }
+        tf.bias[4][a] = fit_lorentz_cubic(bp, kLimTBiasG);
+        tf.scale[4][a] = fit_lorentz_cubic(sp, hs);
+    }
+    return tf;
+}
+
+static int choice_index(TChoice c)
+{
+    switch (c) {
+    case TChoice::Linear: return 0;
+    case TChoice::Parabola: return 1;
+    case TChoice::Lorentz: return 2;
+    case TChoice::Pwl: return 3;
+    case TChoice::LorentzCubic:
+    case TChoice::Best: return 4;
+    case TChoice::None: return -1;
+    }
+    return -1;
+}
+
+std::array<double, 3> apply_double(const CalResult &c, const std::array<double, 3> &r, double t)
+{
+    std::array<double, 3> n{}, out{};
+    for (int i = 0; i < 3; i++) {
+        const double b = c.acc_offset[i] + c.acc_tbias[i].eval(t);
+        const double k = c.acc_gain[i] * (1.0 + c.acc_tscale[i].eval(t));
+        const double v = (r[i] - b) / k;
+        const double x = std::clamp(v, -1.25, 1.25);
+        const auto &q = c.acc_nonlin[i];
+        n[i] = v + q[0] + x * (q[1] + x * (q[2] + x * q[3]));
+    }
+    for (int i = 0; i < 3; i++) {
+        out[i] = c.acc_misalign[i][0] * n[0] + c.acc_misalign[i][1] * n[1] + c.acc_misalign[i][2] * n[2];
+    }
+    return out;
+}
+
+namespace {
+
+std::string static_report(const Station &st, const CalResult &c, CalResult &mut)
+{
+    // Static accuracy over the ambient-temperature rows, stage by stage.
+    struct Acc { double max = 0.0, ss = 0.0; int n = 0; };
+    Acc stage[3], tilt[3];
+    CalResult diag = c, lin = c;
+    for (int i = 0; i < 3; i++) {
+        for (int j = 0; j < 3; j++) diag.acc_misalign[i][j] = (i == j);
+        diag.acc_nonlin[i] = {0, 0, 0, 0};
+        lin.acc_nonlin[i] = {0, 0, 0, 0};
+    }
+    for (const auto &r : st.rows) {
+        if (r.kind != RowKind::Acc || std::fabs(r.temp_c - st.t_ref_c) > kSoakGapC) continue;
+        const std::array<double, 3> raw = {r.v[0] * st.acc_lsb_g, r.v[1] * st.acc_lsb_g, r.v[2] * st.acc_lsb_g};
+        const CalResult *cs[3] = {&diag, &lin, &c};
+        bool is_tilt = false;
+        for (int a = 0; a < 3; a++) is_tilt |= std::fabs(r.u[a]) > 0.05 && std::fabs(r.u[a]) < 0.55;
+        for (int s = 0; s < 3; s++) {
+            const auto o = apply_double(*cs[s], raw, r.temp_c);
+            for (int a = 0; a < 3; a++) {
+                const double e = std::fabs(o[a] - r.u[a]) * 1e3;
+                stage[s].max = std::max(stage[s].max, e);
+                stage[s].ss += e * e;
+                stage[s].n++;
+                if (is_tilt && std::fabs(r.u[a]) <= 0.55) {
+                    tilt[s].max = std::max(tilt[s].max, e);
+                    tilt[s].ss += e * e;
+                    tilt[s].n++;
+                }
+            }
+        }
+    }
+    (void)mut;
+    std::string out = "static accuracy at t_ref (ambient rows), |a_corrected - a_true| in mg:\n";
+    const char *names[3] = {"offset+gain+temperature", "+ misalignment (3x3)", "+ nonlinearity (cubic)"};
+    for (int s = 0; s < 3; s++) {
+        char b[200];
+        std::snprintf(b, sizeof b, "  %-26s all rows: max %7.3f rms %7.3f | within +-30 deg: max %7.3f rms %7.3f\n",
+                      names[s], stage[s].max, stage[s].n ? std::sqrt(stage[s].ss / stage[s].n) : 0.0,
+                      tilt[s].max, tilt[s].n ? std::sqrt(tilt[s].ss / tilt[s].n) : 0.0);
+        out += b;
+    }
+    return out;
+}
+
+} // namespace
+
+std::string fit_station(const Station &st, const FitOptions &opt, CalResult &out)
+{
+    out = CalResult{};
+    // ---- Sanity of the data set ----
+    std::vector<const Row *> acc;
+    for (const auto &r : st.rows) {
+        if (r.kind == RowKind::Acc) acc.push_back(&r);
+    }
+    if (acc.size() < 6) {
+        return "too few measurements: " + std::to_string(acc.size()) +
+               " acc rows; a calibration needs at least the six +-1 g faces";
+    }
+    {
+        bool all_equal = true;
+        for (const Row *r : acc) {
+            for (int a = 0; a < 3; a++) all_equal &= std::fabs(r->u[a] - acc[0]->u[a]) < 1e-6;
+        }
+        if (all_equal) {
+            return "degenerate data: all " + std::to_string(acc.size()) + " acc rows (lines " +
+                   std::to_string(acc.front()->line) + ".." + std::to_string(acc.back()->line) +
+                   ") are at the same position (" + num(acc[0]->u[0], 6) + "," + num(acc[0]->u[1], 6) +
+                   "," + num(acc[0]->u[2], 6) + "): offsets, gains and cross-axis terms cannot be separated";
+        }
+    }
+    // ---- 1. flip pairs per block ----
+    std::string e = block_measurements(st, out.blocks);
+    if (!e.empty()) return e;
+    for (int a = 0; a < 3; a++) {
+        bool any = false;
+        for (const auto &b : out.blocks) any |= b.have[a];
+        if (!any) {
+            return "degenerate data: axis " + std::string(kAxis[a]) +
+                   " has no +1 g / -1 g face pair in any block (the six faces are needed)";
+        }
+    }
+    out.soaks = soak_points(out.blocks);
+    const double t_ref = st.t_ref_c;
+
+    // ---- 2. temperature ----
+    out.tmodel = opt.tmodel;
+    std::array<TModel, 3> bmodel{}, smodel{};
+    if (opt.tmodel == TChoice::None) {
+        for (int a = 0; a < 3; a++) {
+            std::vector<double> bs, ks;
+            for (const auto &b : out.blocks) {
+                if (b.have[a]) { bs.push_back(b.bias[a]); ks.push_back(b.scale[a]); }
+            }
+            bmodel[a].kind = smodel[a].kind = TKind::Linear; // constant: p1 = 0
+            bmodel[a].t_ref = smodel[a].t_ref = t_ref;
+            bmodel[a].t_span = smodel[a].t_span = 1.0;
+            bmodel[a].p[0] = mean_of(bs);
+            smodel[a].p[0] = mean_of(ks);
+        }
+    } else {
+        if (out.soaks.size() < 2) {
+            return "degenerate data: one temperature only (" + num(out.blocks.front().t, -1) +
+                   " degC): temperature models need soaks at 3 or more temperatures; use --tmodel none "
+                   "for an ambient-only calibration";
+        }
+        out.tfits = fit_temperature(out.blocks, out.soaks, t_ref);
+        const int k = choice_index(opt.tmodel);
+        for (int a = 0; a < 3; a++) {
+            const TFit &fb = out.tfits.bias[k][a], &fs = out.tfits.scale[k][a];
+            if (!fb.ok) return "temperature model (" + std::string(tchoice_name(opt.tmodel)) + "), bias axis " + kAxis[a] + ": " + fb.message;
+            if (!fs.ok) return "temperature model (" + std::string(tchoice_name(opt.tmodel)) + "), scale factor axis " + kAxis[a] + ": " + fs.message;
+            bmodel[a] = fb.model;
+            smodel[a] = fs.model;
+        }
+    }
+    for (int a = 0; a < 3; a++) {
+        out.acc_offset[a] = bmodel[a].eval(t_ref);
+        out.acc_gain[a] = smodel[a].eval(t_ref);
+        if (opt.tmodel == TChoice::None) {
+            out.acc_tbias[a] = TModel{};
+            out.acc_tscale[a] = TModel{};
+        } else {
+            out.acc_tbias[a] = to_deviation(bmodel[a], out.acc_offset[a], false);
+            out.acc_tscale[a] = to_deviation(smodel[a], out.acc_gain[a], true);
+        }
+    }
+
+    // ---- 3. misalignment and nonlinearity, per element ----
+    Eigen::Matrix3d p = Eigen::Matrix3d::Identity();
+    for (int i = 0; i < 3; i++) {
+        std::set<long> distinct;
+        for (const Row *r : acc) distinct.insert(std::lround(r->u[i] * 100.0));
+        const bool nl = distinct.size() >= 5;
+        out.have_nonlin |= nl;
+        const int ncol = nl ? 6 : 4;
+        Eigen::MatrixXd m(acc.size(), ncol);
+        Eigen::VectorXd y(acc.size());
+        for (size_t k = 0; k < acc.size(); k++) {
+            const Row &r = *acc[k];
+            const double b = out.acc_offset[i] + out.acc_tbias[i].eval(r.temp_c);
+            const double g = out.acc_gain[i] * (1.0 + out.acc_tscale[i].eval(r.temp_c));
+            const double v = (r.v[i] * st.acc_lsb_g - b) / g;
+            m(k, 0) = r.u[0];
+            m(k, 1) = r.u[1];
+            m(k, 2) = r.u[2];
+            m(k, 3) = -1.0;
+            if (nl) {
+                m(k, 4) = -v * v;
+                m(k, 5) = -v * v * v;
+            }
+            y(k) = v;
+        }
+        Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(m);
+        qr.setThreshold(1e-9);
+        if (qr.rank() < ncol) {
+            return "degenerate data: the positions do not determine axis " + std::string(kAxis[i]) +
+                   " (the acc rows must include at least four non-coplanar directions, e.g. the six faces)";
+        }
+        const Eigen::VectorXd c = qr.solve(y);
+        for (int j = 0; j < 3; j++) p(i, j) = c(j);
+        // c0 folded into the offset (n = v + c0 == (r - (b - k c0)) / k; k(T) differs from the
+        // gain at t_ref by the tscale deviation, < 1e-2 * c0).
+        out.acc_offset[i] -= out.acc_gain[i] * c(3);
+        out.acc_nonlin[i] = {0.0, 0.0, nl ? c(4) : 0.0, nl ? c(5) : 0.0};
+    }
+    if (std::fabs(p.determinant()) < 1e-6) {
+        return "degenerate data: the sensed directions are (nearly) parallel; check the station positions";
+    }
+    const Eigen::Matrix3d minv = p.inverse();
+    for (int i = 0; i < 3; i++) {
+        for (int j = 0; j < 3; j++) out.acc_misalign[i][j] = minv(i, j);
+    }
+
+    // ---- 4. gyro ----
+    {
+        std::vector<const Row *> still, turn;
+        for (const auto &r : st.rows) {
+            if (r.kind == RowKind::GyroStill) still.push_back(&r);
+            if (r.kind == RowKind::GyroTurn) turn.push_back(&r);
+        }
+        if (!still.empty() || !turn.empty()) {
+            if (still.empty()) return "gyro: turn rows but no gyro_still row to give the offset";
+            out.have_gyro = true;
+            double n = 0.0;
+            std::array<double, 3> s{};
+            for (const Row *r : still) {
+                for (int a = 0; a < 3; a++) s[a] += r->v[a] * r->n;
+                n += r->n;
+            }
+            for (int a = 0; a < 3; a++) out.gyro_offset[a] = s[a] / n * st.gyro_lsb_dps;
+            for (int a = 0; a < 3; a++) {
+                double num = 0.0, den = 0.0;
+                for (const Row *r : turn) {
+                    if (std::fabs(std::fabs(r->u[a]) - 1.0) > 1e-3) continue;
+                    const double known = r->angle_deg * (r->u[a] > 0 ? 1.0 : -1.0);
+                    const double meas = r->v[a] * st.gyro_lsb_dps - out.gyro_offset[a] * r->dur_s;
+                    num += meas * known;
+                    den += known * known;
+                }
+                if (den > 0.0) {
+                    out.gyro_scale[a] = num / den;
+                    if (!(out.gyro_scale[a] > 0.0)) {
+                        return "degenerate data: gyro axis " + std::string(kAxis[a]) +
+                               ": the measured turn has the opposite sign of the known angle (axis or direction swapped)";
+                    }
+                }
+            }
+        }
+    }
+
+    // ---- 5. limits ----
+    for (int a = 0; a < 3; a++) {
+        const std::string ax = kAxis[a];
+        auto bad = [&](const std::string &what, double v, const std::string &lim) {
+            return "coefficient out of range: " + what + "[" + ax + "] = " + num(v, 6) + " (limit " + lim + ")";
+        };
+        if (!(std::fabs(out.acc_offset[a]) <= kLimOffsetG)) return bad("acc_offset", out.acc_offset[a], "+-0.5 g");
+        if (!(out.acc_gain[a] >= kLimGainMin && out.acc_gain[a] <= kLimGainMax)) return bad("acc_gain", out.acc_gain[a], "0.75..1.25");
+        for (int j = 0; j < 3; j++) {
+            const double v = out.acc_misalign[a][j];
+            if (a == j ? !(v >= kLimGainMin && v <= kLimGainMax) : !(std::fabs(v) <= kLimOffDiag)) {
+                return bad("acc_misalign[" + std::string(kAxis[j]) + "]", v, a == j ? "0.75..1.25" : "+-0.125");
+            }
+        }
+        for (int k = 0; k < 4; k++) {
+            const double lim = k < 2 ? kLimC01 : kLimC23;
+            if (!(std::fabs(out.acc_nonlin[a][k]) <= lim)) return bad("acc_nonlin c" + std::to_string(k), out.acc_nonlin[a][k], "+-" + num(lim, 6));
+        }
+        e = check_tmodel(out.acc_tbias[a], kLimTBiasG, "acc_tbias[" + ax + "]");
+        if (!e.empty()) return e;
+        e = check_tmodel(out.acc_tscale[a], kLimTScale, "acc_tscale[" + ax + "]");
+        if (!e.empty()) return e;
+        if (!(std::fabs(out.gyro_offset[a]) <= kLimGyroOffset)) return bad("gyro_offset", out.gyro_offset[a], "+-30 deg/s");
+        if (!(out.gyro_scale[a] >= kLimGainMin && out.gyro_scale[a] <= kLimGainMax)) return bad("gyro_scale", out.gyro_scale[a], "0.75..1.25");
+    }
+
+    // ---- Report ----
+    std::string rep;
+    char b[256];
+    std::snprintf(b, sizeof b, "station: %zu rows, %zu acc rows, %zu blocks, %zu soak points %.1f..%.1f degC\n",
+                  st.rows.size(), acc.size(), out.blocks.size(), out.soaks.size(),
+                  out.blocks[out.soaks.front().front()].t, out.blocks[out.soaks.back().front()].t);
+    rep += b;
+    if (opt.tmodel != TChoice::None) {
+        rep += "temperature compensation: residual spread per model (seed 002 definitions)\n"
+               "  bias: Bmax-Bmin of soak-point means, mg [over every soak]\n"
+               "  scale factor: (Kmax-Kmin)/Kmean*1e6/span of soak-point means, ppm/degC [over every soak]\n";
+        std::snprintf(b, sizeof b, "  %-4s %-6s %17s", "axis", "", "raw");
+        rep += b;
+        for (int k = 0; k < TemperatureFits::kKinds; k++) {
+            std::snprintf(b, sizeof b, " %17s", TemperatureFits::name(k));
+            rep += b;
+        }
+        rep += "\n";
+        for (int a = 0; a < 3; a++) {
+            for (int q = 0; q < 2; q++) {
+                std::snprintf(b, sizeof b, "  %-4s %-6s", kAxis[a], q ? "scale" : "bias");
+                rep += b;
+                for (int k = -1; k < TemperatureFits::kKinds; k++) {
+                    const TFit *fb = k >= 0 ? &out.tfits.bias[k][a] : nullptr;
+                    const TFit *fs = k >= 0 ? &out.tfits.scale[k][a] : nullptr;
+                    if (k >= 0 && !(q ? fs->ok : fb->ok)) {
+                        std::snprintf(b, sizeof b, " %17s", "n/a");
+                        rep += b;
+                        continue;
+                    }
+                    const Spread sp = spread(out.blocks, out.soaks, a, fb ? &fb->model : nullptr, fs ? &fs->model : nullptr);
+                    std::snprintf(b, sizeof b, " %7.3f [%7.3f]", q ? sp.scale_mean_ppm : sp.bias_mean_mg,
+                                  q ? sp.scale_all_ppm : sp.bias_all_mg);
+                    rep += b;
+                }
+                rep += "\n";
+            }
+        }
+        rep += std::string("  chosen for the record: ") + tchoice_name(opt.tmodel) +
+               (opt.tmodel == TChoice::Best ? " (= lorentz+cubic)" : "") + "\n";
+    }
+    rep += static_report(st, out, out);
+    if (!out.have_nonlin) rep += "nonlinearity: not fitted (needs a tilt sweep of >= 5 positions per axis)\n";
+    if (out.have_gyro) {
+        std::snprintf(b, sizeof b, "gyro: offset %.4f %.4f %.4f deg/s, scale %.6f %.6f %.6f\n", out.gyro_offset[0],
+                      out.gyro_offset[1], out.gyro_offset[2], out.gyro_scale[0], out.gyro_scale[1], out.gyro_scale[2]);
+        rep += b;
+    }
+    out.report = rep;
+    return "";
+}
+
+} // namespace calstation

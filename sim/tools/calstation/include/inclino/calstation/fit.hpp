@@ -1,0 +1,108 @@
+// fit.hpp - the calibration station's fits, from a parsed station file to the coefficients of
+// the calibration record, with a residual report per model.
+//
+// Pipeline (docs/calibration.md, "What the station fits"):
+//  1. Per block (chamber soak) and axis, the +-1 g flip pair gives the bias (A+ + A-)/2 and the
+//     scale factor (A+ - A-)/2 (seed 000, without its spurious 0.5), in g from the nominal LSB.
+//  2. Blocks are grouped into soak points (temperatures within 2 degC). Bias and scale factor
+//     against temperature are fitted with every model (linear, seed 000's three-point parabola,
+//     Lorentz (seed 002), piecewise-linear, Lorentz + cubic); the chosen model becomes
+//     acc_offset/acc_gain (its value at t_ref) and acc_tbias/acc_tscale (the deviation from it).
+//  3. Every acc row, temperature-corrected, gives v = (r - B(T)) / K(T) per element; per element
+//     i a least-squares fit of  P_i . f - c0 - c2 v^2 - c3 v^3 = v  over all positions f gives
+//     the sensed direction P_i (rows of P; misalignment and residual gain) and the element's
+//     inverse nonlinearity (c2, c3 only with a tilt sweep of >= 5 distinct positions on that
+//     axis). c0 is folded into acc_offset. The firmware applies a = M (v + c2 v^2 + c3 v^3),
+//     M = P^-1.
+//  4. Gyro: offset = mean of the still rows; scale = least squares of measured against known
+//     turn angles (measured = integral - offset * duration).
+//  5. Every coefficient is checked against the record's limits.
+#ifndef INCLINO_CALSTATION_FIT_HPP
+#define INCLINO_CALSTATION_FIT_HPP
+
+#include "inclino/calstation/station.hpp"
+#include "inclino/calstation/tmodel.hpp"
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace calstation {
+
+// Temperature-model choice of the fit. Best = LorentzCubic (see docs/calibration.md for why).
+enum class TChoice { Best, None, Linear, Parabola, Lorentz, Pwl, LorentzCubic };
+
+bool parse_tchoice(const std::string &s, TChoice &c);
+const char *tchoice_name(TChoice c);
+
+struct FitOptions {
+    TChoice tmodel = TChoice::Best;
+};
+
+// One block's flip-pair measurement (step 1).
+struct BlockMeas {
+    long block = 0;
+    double t = 0.0;                      // mean temperature of its face rows, degC
+    std::array<bool, 3> have{};          // axis has a +-1 g pair in this block
+    std::array<double, 3> bias{};        // g
+    std::array<double, 3> scale{};       // g/g
+};
+
+// The residual spreads of one model on one axis (seed 002 definitions).
+struct Spread {
+    double bias_mean_mg = 0.0;   // Bmax - Bmin of soak-point means of the residual bias
+    double bias_all_mg = 0.0;    // the same over every block (includes hysteresis and noise)
+    double scale_mean_ppm = 0.0; // (Kmax - Kmin)/Kmean * 1e6 / span over soak-point means
+    double scale_all_ppm = 0.0;  // the same over every block
+};
+
+// The models of every kind for one data set.
+struct TemperatureFits {
+    // index: 0 linear, 1 three-point parabola, 2 Lorentz, 3 PWL, 4 Lorentz + cubic
+    static constexpr int kKinds = 5;
+    std::array<std::array<TFit, 3>, kKinds> bias;
+    std::array<std::array<TFit, 3>, kKinds> scale;
+    static const char *name(int k);
+};
+
+struct CalResult {
+    // Coefficients in physical units, as the record stores them before quantisation.
+    std::array<double, 3> acc_offset{};            // g
+    std::array<double, 3> acc_gain{};              // g/g
+    std::array<std::array<double, 3>, 3> acc_misalign{}; // M
+    std::array<std::array<double, 4>, 3> acc_nonlin{};   // c0..c3
+    std::array<TModel, 3> acc_tbias{};             // g
+    std::array<TModel, 3> acc_tscale{};            // relative deviation
+    std::array<double, 3> gyro_offset{};           // deg/s
+    std::array<double, 3> gyro_scale{1.0, 1.0, 1.0};
+    bool have_gyro = false;
+    bool have_nonlin = false;
+    TChoice tmodel = TChoice::None;
+
+    // For the reports.
+    std::vector<BlockMeas> blocks;
+    std::vector<std::vector<size_t>> soaks;        // indices into blocks, by temperature
+    TemperatureFits tfits;
+    std::string report;                            // human-readable residual report
+};
+
+// Steps 1 and 2 helpers, public for the comparison and the tests.
+std::string block_measurements(const Station &st, std::vector<BlockMeas> &out);
+std::vector<std::vector<size_t>> soak_points(const std::vector<BlockMeas> &b);
+Spread spread(const std::vector<BlockMeas> &b, const std::vector<std::vector<size_t>> &soaks,
+              int axis, const TModel *bias_model, const TModel *scale_model);
+// Fit every kind on the blocks (t_ref only matters for the three-point ambient point).
+TemperatureFits fit_temperature(const std::vector<BlockMeas> &b,
+                                const std::vector<std::vector<size_t>> &soaks, double t_ref);
+
+// The whole pipeline. Returns "" on success, else a message naming the problem (and the line
+// where there is one); then `out` must not be used.
+std::string fit_station(const Station &st, const FitOptions &opt, CalResult &out);
+
+// Corrected acceleration for one raw reading (counts * lsb = r, g) at temperature t with the
+// result's coefficients in double precision (the reference the firmware is compared with).
+std::array<double, 3> apply_double(const CalResult &c, const std::array<double, 3> &r, double t);
+
+} // namespace calstation
+
+#endif
