@@ -32,7 +32,8 @@
  * THERMAL SETTLING: temperature samples are block-averaged (avg_n samples per point, to beat the
  * output's quantisation noise); the last `span` points form the window. SETTLED when the window
  * is full and max - min over it <= max_change (seed 003: wait for the initial thermal settling,
- * read TEMP_OUT to confirm it).
+ * read TEMP_OUT to confirm it). The points are rounded means, so a true change of up to
+ * max_change + 1 LSB can pass: choose max_change one LSB below the change that must be refused.
  */
 #ifndef INCLINO_STILL_H
 #define INCLINO_STILL_H
