@@ -201,6 +201,11 @@ uint32_t still_motion_count(const struct still *s)
     return (s == NULL || !s->ready) ? 0u : s->motion_windows;
 }
 
+uint32_t still_window_count(const struct still *s)
+{
+    return (s == NULL || !s->ready) ? 0u : s->windows;
+}
+
 /* ---- Thermal -------------------------------------------------------------------------------- */
 
 int still_thermal_init(struct still_thermal *t, const struct still_thermal_cfg *cfg)

@@ -120,6 +120,9 @@ const struct still_window *still_last(const struct still *s);
 /* Non-quiet windows since init/reset: a procedure records it at its start and refuses its result
  * if it changed (motion at any time during it). */
 uint32_t still_motion_count(const struct still *s);
+/* Complete windows since init/reset (saturating): a procedure waits for it to grow to know that
+ * the window spanning its end has been judged. */
+uint32_t still_window_count(const struct still *s);
 
 /* ---- Thermal settling ---------------------------------------------------------------------- */
 
