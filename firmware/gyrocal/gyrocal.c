@@ -432,16 +432,33 @@ static bool verify(const struct gyrocal *g, const struct sums *v, unsigned k,
     return ok;
 }
 
-/* The detectors' verdict on the span since m0: motion or temperature change. */
+/* The detectors' verdict on the span since m0: motion, or a temperature change. Once settled,
+ * a procedure tolerates one LSB more than the start condition (hysteresis): a part that just
+ * met max_change would otherwise flap on the rounding of its points. */
 static enum gyrocal_reason during(const struct gyrocal *g, uint32_t m0)
 {
+    uint32_t change = 0;
     if (still_motion_count(&g->still) != m0) {
         return GYROCAL_ABORTED_MOTION;
     }
-    if (!still_thermal_settled(&g->thermal)) {
+    if (still_thermal_change(&g->thermal, &change) != INC_OK ||
+        change > g->cfg.thermal.max_change + 1u) {
         return GYROCAL_ABORTED_THERMAL;
     }
     return GYROCAL_DONE;
+}
+
+/* Read until the stillness window in progress has been judged (nothing to do when none is in
+ * progress), so the verdict covers every sample taken so far. */
+static int close_window(struct gyrocal *g, uint32_t *missed)
+{
+    struct adis_imu_sample s;
+    const uint32_t w = still_window_count(&g->still);
+    int err = INC_OK;
+    while (err == INC_OK && g->still.n != 0u && still_window_count(&g->still) == w) {
+        err = read_feed(g, &s, missed);
+    }
+    return err;
 }
 
 static int reason_err(enum gyrocal_reason r)
@@ -503,15 +520,20 @@ static int run_autonull(struct gyrocal *g, struct gyrocal_result *res, enum adis
     if (err == INC_OK) {
         err = adis_imu_dr_flush(g->imu);
     }
-    /* 200 ms for the taps to fill (seed 003), watched by the detectors. */
+    /* 200 ms for the taps to fill (seed 003), watched by the detectors; then the window in
+     * progress is judged before the part changes its offsets (a step it would read as motion). */
     for (i = 0; err == INC_OK && i < fill; i++) {
         err = read_feed(g, &s, &res->missed);
+    }
+    if (err == INC_OK) {
+        err = close_window(g, &res->missed);
     }
     if (err == INC_OK && during(g, m0) != GYROCAL_DONE) {
         return abort_restore(g, res, during(g, m0), prd, avg);
     }
     if (err == INC_OK) {
         err = adis_imu_command(g->imu, ADIS_IMU_CMD_AUTONULL);
+        still_restart_window(&g->still);
     }
     if (err == INC_OK) {
         err = restore_settings(g, prd, avg);
@@ -541,6 +563,13 @@ static int run_manual_average(struct gyrocal *g, struct gyrocal_result *res, str
         }
     }
     res->samples = a->n;
+    if (err == INC_OK && *why == GYROCAL_DONE) {
+        /* the last samples' window judged before anything is written */
+        err = close_window(g, &res->missed);
+        if (err == INC_OK) {
+            *why = during(g, m0);
+        }
+    }
     return err;
 }
 
@@ -625,7 +654,14 @@ int gyrocal_run(struct gyrocal *g, enum gyrocal_mode mode, struct gyrocal_result
     case GYROCAL_PRECISION:
         /* The part averages 30 s at its own settings and is busy meanwhile: no sample can be
          * read, so motion in that time shows only in the verification. */
-        err = adis_imu_command(g->imu, ADIS_IMU_CMD_PRECISION_AUTONULL);
+        err = close_window(g, &res->missed);
+        if (err == INC_OK && during(g, m0) != GYROCAL_DONE) {
+            return finish(g, res, during(g, m0), reason_err(during(g, m0)));
+        }
+        if (err == INC_OK) {
+            err = adis_imu_command(g->imu, ADIS_IMU_CMD_PRECISION_AUTONULL);
+            still_restart_window(&g->still); /* samples before the 30 s gap: not one window */
+        }
         break;
     default:
         err = adis_imu_set_sample_period(g->imu, 0x01u);
@@ -682,6 +718,7 @@ int gyrocal_run(struct gyrocal *g, enum gyrocal_mode mode, struct gyrocal_result
             if (err != INC_OK) {
                 return fail_restore(g, res, err, prd, avg);
             }
+            still_restart_window(&g->still);   /* the output steps here */
         }
         err = restore_settings(g, prd, avg);
     } else {

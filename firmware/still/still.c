@@ -47,6 +47,13 @@ static void window_clear(struct still *s)
     s->overrange = false;
 }
 
+void still_restart_window(struct still *s)
+{
+    if (s != NULL && s->ready) {
+        window_clear(s);
+    }
+}
+
 void still_reset(struct still *s)
 {
     unsigned i;

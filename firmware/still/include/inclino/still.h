@@ -109,6 +109,11 @@ int still_init(struct still *s, const struct still_cfg *cfg);
 /* Forget all windows (state UNKNOWN, counters 0); the configuration is kept. */
 void still_reset(struct still *s);
 
+/* Drop the current, incomplete window only (state, counters and the last window kept). For a
+ * step the caller made itself, e.g. a new offset written into the part: a window spanning it
+ * would read as motion. */
+void still_restart_window(struct still *s);
+
 /* One sample of the three gyro and three accel axes. *window_done (may be NULL) is true when
  * this sample completed a window (the state and still_last() were updated). */
 int still_push(struct still *s, const int32_t gyro[3], const int32_t accel[3], bool *window_done);
