@@ -283,12 +283,18 @@ static int32_t mean_q16(const struct sums *a, unsigned i, unsigned k)
     return div_round(a->s[i] * (int64_t)k * 4096, 5u * a->n);
 }
 
-/* Standard error of the mean of axis i, deg/s Q16.16 (an estimate: population variance with
- * truncating divisions, well within 1 % for the noise of these parts). */
-static int32_t se_q16(const struct sums *a, unsigned i, unsigned k)
+/*
+ * Standard error of the mean of axis i, deg/s Q16.16, for output samples that went through the
+ * part's Bartlett filter of `taps` per stage (SENS_AVG M = log2 taps). The filter lowers the
+ * per-sample variance by g = (2 taps^2 + 1) / (3 taps^3) but not the variance of a long mean, so
+ * se^2 = var / (g n): without that factor the estimate would be sqrt(g) too small (0.41 at the
+ * default M = 2). An estimate: truncating divisions, white noise assumed.
+ */
+static int32_t se_q16(const struct sums *a, unsigned i, unsigned k, uint32_t taps)
 {
     const uint64_t n = a->n;
     const uint64_t sa = fx_uabs64(a->s[i]);
+    const uint64_t gnum = 3u * (uint64_t)taps * taps * taps, gden = 2u * (uint64_t)taps * taps + 1u;
     uint64_t num, v16, v32;
     if (n < 2u) {
         return 0;
@@ -296,6 +302,8 @@ static int32_t se_q16(const struct sums *a, unsigned i, unsigned k)
     num = n * a->s2[i] - sa * sa;    /* n^2 x variance, <= n^2 2^26 <= 2^62 */
     v16 = ((num / n) << 16) / n;     /* variance, counts^2 Q16 (num / n <= 2^44) */
     v32 = (v16 << 16) / n;           /* variance of the mean, counts^2 Q32 (<= 2^58) */
+    /* / g: gnum <= 3 * 2^18; multiply first while it cannot overflow, else divide first */
+    v32 = v32 < ((uint64_t)1 << 43) ? v32 * gnum / gden : v32 / gden * gnum;
     return div_round((int64_t)fx_isqrt64(v32) * (int64_t)k, 80u); /* counts Q16 -> deg/s Q16 */
 }
 
@@ -416,7 +424,7 @@ static bool verify(const struct gyrocal *g, const struct sums *v, unsigned k,
     for (i = 0; i < 3u; i++) {
         struct gyrocal_correction c;
         int32_t m = mean_q16(v, i, k);
-        const int32_t se = se_q16(v, i, k);
+        const int32_t se = se_q16(v, i, k, 1u << (g->imu->sens_avg & ADIS_IMU_SENS_AVG_M_MASK));
         const int64_t lim = (int64_t)g->cfg.verify_sigmas * hypot_q16(se, res->residual_q16[i]);
         c.corr[0] = corr[0];
         c.corr[1] = corr[1];
@@ -705,7 +713,7 @@ int gyrocal_run(struct gyrocal *g, enum gyrocal_mode mode, struct gyrocal_result
                 res->proc_saturated[i] = true;
             }
             corr[i] = (int16_t)fine;
-            se = se_q16(&a, i, k);
+            se = se_q16(&a, i, k, 1u << (g->imu->sens_avg & ADIS_IMU_SENS_AVG_M_MASK));
             /* resolution of what is applied without the application's help: the register when
              * writing it, the 1/320 deg/s correction otherwise */
             res->residual_q16[i] = residual_q16(
