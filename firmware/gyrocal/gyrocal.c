@@ -163,9 +163,8 @@ int gyrocal_feed(struct gyrocal *g, const struct adis_imu_sample *s)
 static int read_one(struct gyrocal *g, struct adis_imu_sample *s, uint32_t *missed_acc)
 {
     uint32_t missed = 0;
-    int err;
     if (g->imu->dr_enabled) {
-        err = adis_imu_wait_dr(g->imu, 0, &missed);
+        const int err = adis_imu_wait_dr(g->imu, 0, &missed);
         if (err != INC_OK) {
             return err;
         }

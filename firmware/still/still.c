@@ -249,9 +249,8 @@ void still_thermal_reset(struct still_thermal *t)
 
 int still_thermal_push(struct still_thermal *t, int32_t temp, bool *point_done)
 {
-    int32_t mean = 0, lo, hi;
+    int32_t mean = 0;
     bool done = false;
-    uint32_t i;
     int err;
     if (point_done != NULL) {
         *point_done = false;
@@ -272,7 +271,8 @@ int still_thermal_push(struct still_thermal *t, int32_t temp, bool *point_done)
         t->count++;
     }
     if (t->count == t->cfg.span) {
-        lo = hi = t->pts[0];
+        int32_t lo = t->pts[0], hi = t->pts[0];
+        uint32_t i;
         for (i = 1; i < t->cfg.span; i++) {
             lo = t->pts[i] < lo ? t->pts[i] : lo;
             hi = t->pts[i] > hi ? t->pts[i] : hi;

@@ -226,10 +226,9 @@ static uint32_t kernel(uint32_t w, unsigned p, int64_t *h)
         h[i] = 1;
     }
     for (k = 1; k < p; k++) {
-        int64_t t[1024];
+        int64_t t[1024] = {0};
         const uint32_t nl = len + w - 1u;
         for (i = 0; i < nl; i++) {
-            t[i] = 0;
             for (j = 0; j < w; j++) {
                 if (i >= j && i - j < len) {
                     t[i] += h[i - j];

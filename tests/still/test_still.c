@@ -145,7 +145,6 @@ static void test_mean_norm_drift(void)
     struct still s;
     struct still_cfg c = base_cfg();
     const int32_t g0[3] = {0, 0, 0};
-    unsigned i;
     /* steady rotation: no variance, caught by the mean test */
     c.gyro_mean_max = 60;
     REQUIRE(still_init(&s, &c) == INC_OK);
@@ -162,7 +161,7 @@ static void test_mean_norm_drift(void)
         const int32_t cases[6][3] = {{0, 0, 1000}, {600, 0, 800}, {0, 0, 1051},
                                      {0, 0, 0}, {INT32_MAX, INT32_MIN, INT32_MAX}, {0, -950, 0}};
         const bool quiet[6] = {true, true, false, false, false, true};
-        unsigned k;
+        unsigned k, i;
         for (k = 0; k < 6u; k++) {
             for (i = 0; i < 4u; i++) {
                 CHECK_OK(still_push(&s, g0, cases[k], NULL));
