@@ -173,6 +173,13 @@ static bool tmodel_ok(const struct calrec_tmodel *m, int32_t ylim)
         return m->n == 0 && m->t_ref == 0 && m->t_span == 0 && all_in_range(m->p, 2, -ylim, ylim) &&
                in_range(m->p[2], CALREC_LIM_SPAN_MIN, CALREC_LIM_WIDTH_MAX) &&
                in_range(m->p[3], CALREC_LIM_T_MIN, CALREC_LIM_T_MAX) && tail_zero(m, 4);
+    case CALREC_TM_LORENTZ_CUBIC:
+        return m->n == 0 && in_range(m->t_ref, CALREC_LIM_T_MIN, CALREC_LIM_T_MAX) &&
+               in_range(m->t_span, CALREC_LIM_SPAN_MIN, CALREC_LIM_SPAN_MAX) &&
+               all_in_range(m->p, 2, -ylim, ylim) &&
+               in_range(m->p[2], CALREC_LIM_SPAN_MIN, CALREC_LIM_WIDTH_MAX) &&
+               in_range(m->p[3], CALREC_LIM_T_MIN, CALREC_LIM_T_MAX) &&
+               all_in_range(&m->p[4], 3, -ylim, ylim) && tail_zero(m, 7);
     case CALREC_TM_PWL:
         if (!in_range(m->n, 2, CALREC_TM_PARAMS) ||
             !in_range(m->t_ref, CALREC_LIM_T_MIN, CALREC_LIM_T_MAX) ||

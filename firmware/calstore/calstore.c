@@ -189,7 +189,7 @@ static int judge_slot(struct calstore *st, unsigned slot, const struct calrec_bi
 
     if (magic != CALREC_MAGIC) {
         /* Never written, or garbage (torn erase, torn first program). "Empty" means every byte
-         * a version-1 save would program is erased. */
+         * a version-2 save would program is erased. */
         err = region_erased(st, slot, 0, st->commit_off + commit_len(prog), &erased);
         if (err) {
             return err;

@@ -55,7 +55,7 @@ int fix_put_image(struct fix_store *fs, unsigned s, const uint8_t *img, uint32_t
 /* Encode r with seq, then fix_put_image. */
 int fix_put_record(struct fix_store *fs, unsigned s, const struct calrec *r, uint32_t seq);
 
-/* Recompute the CRC of a version-1 image after a test patched it. */
+/* Recompute the CRC of a version-2 image after a test patched it. */
 void fix_reseal(uint8_t *img);
 
 #endif /* INCLINO_TEST_CALSTORE_FIXTURE_H */

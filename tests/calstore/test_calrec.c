@@ -6,7 +6,7 @@
 #include "inclino/calrec.h"
 #include "unit.h"
 
-#include "golden_v1.h"
+#include "golden_v2.h"
 
 static void test_golden_bytes(void)
 {
@@ -19,16 +19,16 @@ static void test_golden_bytes(void)
     CHECK_OK(calrec_check(&r));
     REQUIRE(calrec_encode(&r, 7u, img, sizeof img) == INC_OK);
     for (i = 0; i < CALREC_IMAGE_SIZE; i++) {
-        if (img[i] != golden_v1[i]) {
+        if (img[i] != golden_v2[i]) {
             if (diffs++ < 8u) {
-                CHECK_EQ_HEX(img[i], golden_v1[i]);
+                CHECK_EQ_HEX(img[i], golden_v2[i]);
             }
         }
     }
     CHECK_EQ_INT(diffs, 0);
-    CHECK_EQ_HEX(calrec_get_le32(&img[CALREC_OFF_CRC]), GOLDEN_V1_CRC);
+    CHECK_EQ_HEX(calrec_get_le32(&img[CALREC_OFF_CRC]), GOLDEN_V2_CRC);
     /* And the golden image decodes to exactly the record. */
-    CHECK_OK(calrec_decode(golden_v1, sizeof golden_v1, &r.binding, &back, &seq));
+    CHECK_OK(calrec_decode(golden_v2, sizeof golden_v2, &r.binding, &back, &seq));
     CHECK_EQ_INT(seq, 7);
     CHECK(back.valid);
     r.valid = true;
@@ -128,7 +128,7 @@ static const struct limit_case limits[] = {
     {"lorentz w max", f_tb2_w, 332, 26214400, 26214401},
     {"lorentz Tc min", f_tb2_tc, 336, -6553600, -6553601},
     {"lorentz A min", f_tb2_a, 328, -32768, -32769},
-    {"unknown model kind", f_ts0_kind, 388, 4, 5},
+    {"unknown model kind", f_ts0_kind, 388, 4, 6},
     {"negative model kind", f_ts0_kind, 388, 4, -1},
     {"pwl n max", f_ts0_n, 392, 16, 17},
     {"pwl n = 0", f_ts0_n, 392, 9, 0},
@@ -178,6 +178,77 @@ static void test_limits(void)
         CHECK_ERR(calrec_decode(img, sizeof img, &r.binding, &back, NULL), INC_ERR_RANGE);
         CHECK(fix_record_is_default(&back));
     }
+}
+
+/* LORENTZ_CUBIC (format version 2): accepted inside its limits, round trip exact, every limit
+ * and unused word enforced on the struct and on the image. */
+static void test_lorentz_cubic_kind(void)
+{
+    struct calrec r, back;
+    uint8_t img[CALREC_IMAGE_SIZE];
+    struct calrec_tmodel *m;
+    unsigned i;
+    /* Each case: which word, accepted value, rejected value. */
+    static const struct {
+        unsigned word; /* 2 = t_ref, 3 = t_span, 4 + k = p[k] */
+        int32_t ok, bad;
+    } cases[] = {
+        {2, -6553600, -6553601},    /* t_ref >= -100 degC */
+        {3, 65536, 65535},          /* t_span >= 1 degC */
+        {3, 13107200, 13107201},    /* t_span <= 200 degC */
+        {4 + 1, -32768, -32769},    /* height within the bias limit (0.5 g) */
+        {4 + 2, 26214400, 26214401},/* w <= 400 degC */
+        {4 + 3, 13107200, 13107201},/* Tc <= 200 degC */
+        {4 + 6, 32768, 32769},      /* cubic coefficient within the bias limit */
+        {4 + 7, 0, 1},              /* first unused word */
+        {4 + 15, 0, -1},            /* last unused word */
+    };
+
+    fix_record(&r);
+    m = &r.acc_tbias[1];
+    m->kind = CALREC_TM_LORENTZ_CUBIC;
+    m->t_ref = 20 * CALREC_Q16_ONE;
+    m->t_span = 40 * CALREC_Q16_ONE;
+    m->p[0] = -700;
+    m->p[1] = 800;
+    m->p[2] = 26 * CALREC_Q16_ONE;
+    m->p[3] = -25 * CALREC_Q16_ONE;
+    m->p[4] = 30;
+    m->p[5] = -12;
+    m->p[6] = -120;
+    CHECK_OK(calrec_check(&r));
+    REQUIRE(calrec_encode(&r, 3u, img, sizeof img) == INC_OK);
+    /* tbias[y] starts at 148 + 80: kind, n, t_ref, t_span, p0.. */
+    CHECK_EQ_HEX(calrec_get_le32(&img[228]), (uint32_t)CALREC_TM_LORENTZ_CUBIC);
+    CHECK_EQ_HEX(calrec_get_le32(&img[228 + 16 + 24]), (uint32_t)-120);
+    CHECK_OK(calrec_decode(img, sizeof img, &r.binding, &back, NULL));
+    r.valid = true; /* decode marks its output valid */
+    CHECK(fix_record_equal(&back, &r));
+    r.valid = false;
+    for (i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        int32_t *w = cases[i].word == 2 ? &m->t_ref : cases[i].word == 3 ? &m->t_span : &m->p[cases[i].word - 4];
+        const int32_t keep = *w;
+        uint8_t bad[CALREC_IMAGE_SIZE];
+        *w = cases[i].ok;
+        CHECK_OK(calrec_check(&r));
+        *w = cases[i].bad;
+        CHECK_ERR(calrec_check(&r), INC_ERR_RANGE);
+        memcpy(bad, img, sizeof bad);
+        calrec_put_le32(&bad[228 + 4 * cases[i].word], (uint32_t)cases[i].bad);
+        fix_reseal(bad);
+        CHECK_ERR(calrec_check_image(bad, sizeof bad, &r.binding), INC_ERR_RANGE);
+        *w = keep;
+    }
+    m->n = 1; /* n is a PWL field */
+    CHECK_ERR(calrec_check(&r), INC_ERR_RANGE);
+    /* The scale-factor deviation limit (0.125 in Q30) applies to a tscale model. */
+    r.acc_tscale[1] = *m;
+    m->n = 0;
+    r.acc_tscale[1].n = 0;
+    r.acc_tscale[1].p[5] = CALREC_LIM_TSCALE;
+    CHECK_OK(calrec_check(&r));
+    r.acc_tscale[1].p[5] = CALREC_LIM_TSCALE + 1;
+    CHECK_ERR(calrec_check(&r), INC_ERR_RANGE);
 }
 
 /* The smallest table: 2 knots is accepted, 1 knot is not (words beyond n all 0 in both). */
@@ -274,14 +345,14 @@ static void test_wrong_sensor(void)
         case 4: e.lot_id1 = 0xA5A4u; break;
         default: e.lot_id2 = 0x0043u; break;
         }
-        CHECK_ERR(calrec_decode(golden_v1, sizeof golden_v1, &e, &out, &seq), INC_ERR_MISMATCH);
+        CHECK_ERR(calrec_decode(golden_v2, sizeof golden_v2, &e, &out, &seq), INC_ERR_MISMATCH);
         CHECK(fix_record_is_default(&out));
         CHECK_EQ_INT(seq, 0);
     }
     /* An invalid expected binding is a caller error, not a mismatch. */
     fix_binding(&e);
     e.family = 0;
-    CHECK_ERR(calrec_decode(golden_v1, sizeof golden_v1, &e, &out, &seq), INC_ERR_INVAL);
+    CHECK_ERR(calrec_decode(golden_v2, sizeof golden_v2, &e, &out, &seq), INC_ERR_INVAL);
     CHECK(fix_record_is_default(&out));
 }
 
@@ -292,8 +363,13 @@ static void test_header_errors(void)
     uint8_t img[CALREC_IMAGE_SIZE];
 
     fix_binding(&e);
-    memcpy(img, golden_v1, sizeof img);
-    calrec_put_le32(&img[CALREC_OFF_VERSION], 2u);
+    memcpy(img, golden_v2, sizeof img);
+    /* Version 1 (the layout before LORENTZ_CUBIC) and a future version 3 are both refused. */
+    calrec_put_le32(&img[CALREC_OFF_VERSION], 1u);
+    fix_reseal(img);
+    CHECK_ERR(calrec_decode(img, sizeof img, &e, &out, NULL), INC_ERR_VERSION);
+    CHECK(fix_record_is_default(&out));
+    calrec_put_le32(&img[CALREC_OFF_VERSION], 3u);
     fix_reseal(img);
     CHECK_ERR(calrec_decode(img, sizeof img, &e, &out, NULL), INC_ERR_VERSION);
     CHECK(fix_record_is_default(&out));
@@ -301,16 +377,16 @@ static void test_header_errors(void)
     fix_reseal(img);
     CHECK_ERR(calrec_decode(img, sizeof img, &e, &out, NULL), INC_ERR_VERSION);
 
-    memcpy(img, golden_v1, sizeof img);
+    memcpy(img, golden_v2, sizeof img);
     calrec_put_le32(&img[CALREC_OFF_LENGTH], 660u);
     fix_reseal(img);
     CHECK_ERR(calrec_decode(img, sizeof img, &e, &out, NULL), INC_ERR_VERSION);
 
-    memcpy(img, golden_v1, sizeof img);
+    memcpy(img, golden_v2, sizeof img);
     img[0] = 'X';
     CHECK_ERR(calrec_decode(img, sizeof img, &e, &out, NULL), INC_ERR_CRC);
 
-    memcpy(img, golden_v1, sizeof img);
+    memcpy(img, golden_v2, sizeof img);
     CHECK_ERR(calrec_decode(img, CALREC_IMAGE_SIZE - 1u, &e, &out, NULL), INC_ERR_INVAL);
     CHECK_ERR(calrec_decode(img, 3u, &e, &out, NULL), INC_ERR_INVAL);
     CHECK(fix_record_is_default(&out));
@@ -326,7 +402,7 @@ static void test_every_bit_flip(void)
     uint32_t seq;
 
     fix_binding(&e);
-    memcpy(img, golden_v1, sizeof img);
+    memcpy(img, golden_v2, sizeof img);
     for (byte = 0; byte < CALREC_IMAGE_SIZE; byte++) {
         /* A flipped version or length word is reported as a version problem (the header is
          * judged before the CRC); anything else, magic included, as corruption. */
@@ -365,16 +441,16 @@ static void test_null_and_sizes(void)
     memset(img, 0x33, sizeof img);
     CHECK_ERR(calrec_encode(&r, 0, img, sizeof img - 1u), INC_ERR_NO_SPACE);
     CHECK_EQ_HEX(img[0], 0x33u);
-    CHECK_ERR(calrec_decode(golden_v1, sizeof golden_v1, &e, NULL, &seq), INC_ERR_NULL);
+    CHECK_ERR(calrec_decode(golden_v2, sizeof golden_v2, &e, NULL, &seq), INC_ERR_NULL);
     CHECK_EQ_INT(seq, 0);
     out.valid = true;
-    CHECK_ERR(calrec_decode(NULL, sizeof golden_v1, &e, &out, NULL), INC_ERR_NULL);
+    CHECK_ERR(calrec_decode(NULL, sizeof golden_v2, &e, &out, NULL), INC_ERR_NULL);
     CHECK(fix_record_is_default(&out));
     out.valid = true;
-    CHECK_ERR(calrec_decode(golden_v1, sizeof golden_v1, NULL, &out, NULL), INC_ERR_NULL);
+    CHECK_ERR(calrec_decode(golden_v2, sizeof golden_v2, NULL, &out, NULL), INC_ERR_NULL);
     CHECK(fix_record_is_default(&out));
     CHECK_ERR(calrec_check_image(NULL, 10, &e), INC_ERR_NULL);
-    CHECK_ERR(calrec_check_image(golden_v1, sizeof golden_v1, NULL), INC_ERR_NULL);
+    CHECK_ERR(calrec_check_image(golden_v2, sizeof golden_v2, NULL), INC_ERR_NULL);
     /* A record with the default (unbound) binding can never be stored. */
     calrec_set_default(&r);
     CHECK(fix_record_is_default(&r));
@@ -386,6 +462,7 @@ static void test_null_and_sizes(void)
 int main(void)
 {
     UNIT_RUN(test_golden_bytes);
+    UNIT_RUN(test_lorentz_cubic_kind);
     UNIT_RUN(test_round_trip);
     UNIT_RUN(test_limits);
     UNIT_RUN(test_pwl_two_knots);

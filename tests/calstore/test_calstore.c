@@ -163,7 +163,7 @@ static void test_wrong_version(void)
     setup(&g8);
     fix_record(&r);
     REQUIRE(calrec_encode(&r, 5u, img, sizeof img) == INC_OK);
-    calrec_put_le32(&img[CALREC_OFF_VERSION], 2u);
+    calrec_put_le32(&img[CALREC_OFF_VERSION], 1u); /* a record of the previous format */
     fix_reseal(img);
     REQUIRE(fix_put_image(&fs, 0, img, CALREC_IMAGE_SIZE) == INC_OK);
     CHECK_ERR(calstore_load(&fs.store, &r.binding, &out, &info), INC_ERR_VERSION);

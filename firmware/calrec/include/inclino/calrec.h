@@ -15,7 +15,7 @@
  * accelerometer terms act on the reading already converted to g with the part's NOMINAL
  * sensitivity, so gains are close to 1.0.
  *
- * Byte image (format version 1, CALREC_IMAGE_SIZE = 656 bytes; the full table is in
+ * Byte image (format version 2, CALREC_IMAGE_SIZE = 656 bytes; the full table is in
  * docs/calibration-storage.md): every field is a 32-bit little-endian word, in the order of the
  * struct declarations below (arrays row-major, i.e. last index fastest), preceded by the header
  * and followed by the CRC-32:
@@ -29,7 +29,7 @@
  * sequence number at 12, and the CRC-32 of bytes [0, length-4) stored at length-4.
  *
  * Version rule: CALREC_VERSION changes on ANY change of field order, count, width, unit, Q format
- * or meaning. A firmware accepts exactly the versions it has a decoder for (today: 1); any other
+ * or meaning. A firmware accepts exactly the versions it has a decoder for (today: 2); any other
  * version is INC_ERR_VERSION and the sensor runs uncalibrated. See docs/calibration-storage.md.
  */
 #ifndef INCLINO_CALREC_H
@@ -48,7 +48,11 @@ extern "C" {
 /* ---- Image header -------------------------------------------------------------------------- */
 
 #define CALREC_MAGIC 0x4C414349u  /* bytes 'I' 'C' 'A' 'L' in little-endian order */
-#define CALREC_VERSION 1u         /* the format version this firmware writes and reads */
+/* The format version this firmware writes and reads. History: 1 = first layout; 2 = the same
+ * layout plus the temperature-model kind LORENTZ_CUBIC, and the polynomial kinds (LINEAR,
+ * PARABOLA, LORENTZ_CUBIC) held at the ends of [t_ref - t_span, t_ref + t_span] (v1 left their
+ * extrapolation unspecified). docs/calibration-storage.md 2.4. */
+#define CALREC_VERSION 2u
 
 #define CALREC_OFF_MAGIC 0u       /* byte offsets of the header words, valid for every version */
 #define CALREC_OFF_VERSION 4u
@@ -57,7 +61,8 @@ extern "C" {
 #define CALREC_HEADER_SIZE 16u
 #define CALREC_MIN_SIZE 20u       /* header + CRC: the smallest length any version can declare */
 
-/* Version-1 layout: byte offset of each field group (every word little-endian). */
+/* Version-2 layout (unchanged from version 1): byte offset of each field group (every word
+ * little-endian). */
 #define CALREC_OFF_BINDING 16u      /* 6 words: family, product, revision, serial, lot_id1, lot_id2 */
 #define CALREC_OFF_ACC_OFFSET 40u   /* 3 words, x y z */
 #define CALREC_OFF_ACC_GAIN 52u     /* 3 words */
@@ -68,7 +73,7 @@ extern "C" {
 #define CALREC_OFF_GYRO_OFFSET 628u /* 3 words */
 #define CALREC_OFF_GYRO_SCALE 640u  /* 3 words */
 #define CALREC_OFF_CRC 652u         /* CRC-32 of bytes [0, 652) */
-#define CALREC_IMAGE_SIZE 656u      /* bytes of a version-1 image, CRC included */
+#define CALREC_IMAGE_SIZE 656u      /* bytes of a version-2 image, CRC included */
 #define CALREC_TMODEL_SIZE 80u      /* kind, n, t_ref, t_span, p[16] */
 
 /* ---- Fixed-point helpers for constants ----------------------------------------------------- */
@@ -122,12 +127,13 @@ struct calrec_binding {
 
 enum calrec_tmodel_kind {
     CALREC_TM_NONE = 0,     /* y(T) = 0 */
-    CALREC_TM_LINEAR = 1,   /* y = p0 + p1*u,            u = (T - t_ref) / t_span */
+    CALREC_TM_LINEAR = 1,   /* y = p0 + p1*u,            u = (Th - t_ref) / t_span */
     CALREC_TM_PARABOLA = 2, /* y = p0 + p1*u + p2*u^2    (seed 000 three-point: c, b, a) */
     CALREC_TM_LORENTZ = 3,  /* y = p0 + p1 / (1 + ((T - p3) / (p2 / 2))^2)  (seed 002) */
     CALREC_TM_PWL = 4,      /* n knots at T_i = t_ref + i*t_span, y_i = p[i]; held at the ends */
+    CALREC_TM_LORENTZ_CUBIC = 5, /* y = LORENTZ(Th) + p4*u + p5*u^2 + p6*u^3 (since version 2) */
 };
-#define CALREC_TM_KIND_COUNT 5
+#define CALREC_TM_KIND_COUNT 6
 
 #define CALREC_TM_PARAMS 16      /* parameter words per model; also the maximum PWL knot count */
 
@@ -137,14 +143,20 @@ enum calrec_tmodel_kind {
  * deviation (scale = 1 + y).
  *   kind    enum calrec_tmodel_kind
  *   n       PWL: knot count 2..CALREC_TM_PARAMS; every other kind: 0
- *   t_ref   LINEAR/PARABOLA: centre temperature; PWL: first knot; degC Q16.16 in [-100, 200];
- *           NONE/LORENTZ: 0
- *   t_span  LINEAR/PARABOLA: normalisation span; PWL: knot spacing; degC Q16.16 in [1, 200];
- *           NONE/LORENTZ: 0. The last PWL knot must lie at or below 200 degC.
+ *   t_ref   LINEAR/PARABOLA/LORENTZ_CUBIC: centre temperature; PWL: first knot; degC Q16.16
+ *           in [-100, 200]; NONE/LORENTZ: 0
+ *   t_span  LINEAR/PARABOLA/LORENTZ_CUBIC: half width of the calibrated range; PWL: knot
+ *           spacing; degC Q16.16 in [1, 200]; NONE/LORENTZ: 0. The last PWL knot must lie at or
+ *           below 200 degC.
  *   p[]     LINEAR p0..p1, PARABOLA p0..p2, PWL p0..p(n-1): y format, |p| <= the quantity's
  *           limit; LORENTZ: p0 = y0 and p1 = peak height above y0 (y format), p2 = full width at
- *           half maximum w (degC Q16.16, [1, 400]), p3 = centre Tc (degC Q16.16, [-100, 200]).
+ *           half maximum w (degC Q16.16, [1, 400]), p3 = centre Tc (degC Q16.16, [-100, 200]);
+ *           LORENTZ_CUBIC: p0..p3 as LORENTZ, p4..p6 the u, u^2, u^3 coefficients (y format).
  *           Every parameter word a kind does not use is 0.
+ * Th is T held in the calibrated range: LINEAR, PARABOLA and LORENTZ_CUBIC are evaluated at
+ * Th = clamp(T, t_ref - t_span, t_ref + t_span) (|u| <= 1), PWL at clamp(T, first, last knot);
+ * a fitted polynomial is never extrapolated beyond the chamber range. LORENTZ is bounded by
+ * itself (between p0 and p0 + p1) and is evaluated at T.
  * Normalising the polynomial argument by t_span keeps every polynomial coefficient in the y
  * format and its resolution, instead of needing y/degC^2 with a different Q format.
  */
@@ -238,21 +250,21 @@ bool calrec_binding_equal(const struct calrec_binding *a, const struct calrec_bi
 int calrec_check(const struct calrec *rec);
 
 /*
- * Write the version-1 image of rec with sequence number seq to img[0..CALREC_IMAGE_SIZE).
+ * Write the version-2 image of rec with sequence number seq to img[0..CALREC_IMAGE_SIZE).
  * Refuses (and writes nothing) when calrec_check(rec) fails: INC_ERR_NULL, INC_ERR_INVAL,
  * INC_ERR_RANGE; INC_ERR_NO_SPACE when cap < CALREC_IMAGE_SIZE.
  */
 int calrec_encode(const struct calrec *rec, uint32_t seq, uint8_t *img, size_t cap);
 
 /*
- * Check a version-1 image in place, without decoding it: the same checks, order and codes as
+ * Check a version-2 image in place, without decoding it: the same checks, order and codes as
  * calrec_decode below (which calls it). Needs no record buffer, so the store can judge both
  * slots with only the image buffer. INC_ERR_NULL for NULL img/expect.
  */
 int calrec_check_image(const uint8_t *img, size_t len, const struct calrec_binding *expect);
 
 /*
- * Read a version-1 image of len bytes into *out and its sequence number into *seq (seq may be
+ * Read a version-2 image of len bytes into *out and its sequence number into *seq (seq may be
  * NULL). Checks, in this order: magic (INC_ERR_CRC: not a record), version field
  * (INC_ERR_VERSION), length field == CALREC_IMAGE_SIZE (INC_ERR_VERSION) and len >= that
  * (INC_ERR_INVAL), CRC-32 (INC_ERR_CRC), binding equal to *expect (INC_ERR_MISMATCH), coefficient

@@ -81,7 +81,7 @@ struct calstore_config {
 /* The store's state: caller-allocated, fixed size. Fields are private to calstore.c. */
 struct calstore {
     struct calstore_config cfg;
-    uint32_t commit_off;      /* offset of the commit unit in a slot for a version-1 image */
+    uint32_t commit_off;      /* offset of the commit unit in a slot for a version-2 image */
     uint32_t init_magic;      /* set by calstore_init; guards use of an uninitialised store */
     uint8_t buf[CALREC_IMAGE_SIZE + CALSTORE_PROG_MAX]; /* image buffer (padded to prog_size) */
 };
@@ -101,7 +101,7 @@ struct calstore_info {
 };
 
 /*
- * Smallest slot_size for a geometry: the version-1 image rounded up to prog_size, plus one
+ * Smallest slot_size for a geometry: the version-2 image rounded up to prog_size, plus one
  * commit unit of max(prog_size, 4) bytes, rounded up to whole pages. 0 for an invalid geometry.
  */
 uint32_t calstore_slot_min_size(uint32_t prog_size, uint32_t page_size);
