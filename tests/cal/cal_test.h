@@ -1,0 +1,78 @@
+/*
+ * cal_test.h - helpers of the tests/cal firmware tests: sweep density (full on the host,
+ * reduced under QEMU and the sanitizers), a deterministic generator, worst-error bookkeeping
+ * and integer-only printing (newlib-nano's printf has no %f).
+ */
+#ifndef INCLINO_CAL_TEST_H
+#define INCLINO_CAL_TEST_H
+
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+
+#include "unit.h"
+
+#if defined(__arm__) || defined(__riscv)
+#define CALT_ON_TARGET 1
+#else
+#define CALT_ON_TARGET 0
+#endif
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_UNDEFINED__)
+#define CALT_SANITIZED 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(undefined_behavior_sanitizer)
+#define CALT_SANITIZED 1
+#endif
+#endif
+#ifndef CALT_SANITIZED
+#define CALT_SANITIZED 0
+#endif
+/* CALT_DENSITY(full, reduced): the dense sweep on the host, a reduced one under QEMU (soft
+ * float) and under ASan/UBSan, whose job is undefined behaviour on the same code paths. */
+#define CALT_DENSITY(full, reduced) ((CALT_ON_TARGET || CALT_SANITIZED) ? (reduced) : (full))
+
+#define CALT_Q16 65536.0
+#define CALT_Q30 1073741824.0
+
+/* xorshift32: the same sequence on every target. */
+static inline uint32_t calt_rand(uint32_t *s)
+{
+    uint32_t x = *s;
+    x ^= x << 13;
+    x ^= x >> 17;
+    x ^= x << 5;
+    *s = x;
+    return x;
+}
+
+/* Uniform integer in [lo, hi] (hi - lo < 2^32). */
+static inline int64_t calt_range(uint32_t *s, int64_t lo, int64_t hi)
+{
+    const uint64_t span = (uint64_t)(hi - lo) + 1u;
+    const uint64_t r = ((uint64_t)calt_rand(s) << 32) | calt_rand(s);
+    return lo + (int64_t)(r % span);
+}
+
+struct calt_err {
+    double max;
+    unsigned long count;
+};
+
+static inline void calt_err_add(struct calt_err *e, double err)
+{
+    err = fabs(err);
+    e->count++;
+    if (err > e->max) {
+        e->max = err;
+    }
+}
+
+/* "MEASURED <name>: max |error| = <x.xxx> LSB over <n> points (bound <b>)" */
+static inline void calt_report(const char *name, const struct calt_err *e, double bound)
+{
+    long long m = (long long)(e->max * 1000.0 + 0.5), b = (long long)(bound * 1000.0 + 0.5);
+    printf("MEASURED %s: max |error| = %lld.%03lld LSB over %lu points (bound %lld.%03lld)\n", name,
+           m / 1000, m % 1000, e->count, b / 1000, b % 1000);
+}
+
+#endif
