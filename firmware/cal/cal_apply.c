@@ -46,7 +46,6 @@ int cal_acc_set_temp(struct cal_acc *st, fx_q16_t t_c)
     fx_q16_t off[3];
     fx_q30_t inv[3];
     unsigned i;
-    int err;
     if (st == NULL) {
         return INC_ERR_NULL;
     }
@@ -57,7 +56,7 @@ int cal_acc_set_temp(struct cal_acc *st, fx_q16_t t_c)
     for (i = 0; i < 3u; i++) {
         int32_t b, s;
         fx_q30_t k;
-        err = cal_tmodel_eval(&st->rec->acc_tbias[i], t_c, &b);
+        int err = cal_tmodel_eval(&st->rec->acc_tbias[i], t_c, &b);
         if (err == INC_OK) {
             err = cal_tmodel_eval(&st->rec->acc_tscale[i], t_c, &s);
         }

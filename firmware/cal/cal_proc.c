@@ -135,7 +135,6 @@ int cal_six_position(const fx_q16_t face[CAL_FACES][3], fx_q16_t offset[3], fx_q
     fx_q16_t o[3];
     fx_q30_t g[3];
     unsigned f, i, j;
-    int err;
     if (face == NULL || offset == NULL || gain == NULL) {
         return INC_ERR_NULL;
     }
@@ -155,7 +154,7 @@ int cal_six_position(const fx_q16_t face[CAL_FACES][3], fx_q16_t offset[3], fx_q
         }
     }
     for (i = 0; i < 3u; i++) {
-        err = flip(face[2u * i][i], face[2u * i + 1u][i], &o[i], &g[i]);
+        const int err = flip(face[2u * i][i], face[2u * i + 1u][i], &o[i], &g[i]);
         if (err != INC_OK) {
             return err;
         }
