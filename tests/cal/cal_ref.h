@@ -68,48 +68,4 @@ static inline double ref_eval(const struct calrec_tmodel *m, int32_t t_raw)
     return y;
 }
 
-/* A random model of `kind` within the limits; ylim is the y-format limit (raw). Every fourth
- * model puts its y parameters at +-ylim to reach the worst rounding propagation. */
-static inline void random_model(uint32_t *s, int32_t kind, int32_t ylim, unsigned k, struct calrec_tmodel *m)
-{
-    unsigned i;
-    const int extreme = (k % 4u) == 0u;
-    memset(m, 0, sizeof *m);
-    m->kind = kind;
-    for (i = 0; i < CALREC_TM_PARAMS; i++) {
-        m->p[i] = extreme ? ((calt_rand(s) & 1u) ? ylim : -ylim) : (int32_t)calt_range(s, -ylim, ylim);
-    }
-    switch (kind) {
-    case CALREC_TM_LINEAR:
-    case CALREC_TM_PARABOLA:
-    case CALREC_TM_LORENTZ_CUBIC:
-        m->t_ref = (int32_t)calt_range(s, CALREC_LIM_T_MIN, CALREC_LIM_T_MAX);
-        m->t_span = (int32_t)calt_range(s, CALREC_LIM_SPAN_MIN, (k % 3u) ? 60 * 65536 : CALREC_LIM_SPAN_MAX);
-        break;
-    case CALREC_TM_PWL:
-        m->n = (int32_t)calt_range(s, 2, CALREC_TM_PARAMS);
-        {
-            const int32_t most = (CALREC_LIM_T_MAX - CALREC_LIM_T_MIN) / (m->n - 1);
-            m->t_span = (int32_t)calt_range(s, CALREC_LIM_SPAN_MIN, most < CALREC_LIM_SPAN_MAX ? most : CALREC_LIM_SPAN_MAX);
-        }
-        m->t_ref = (int32_t)calt_range(s, CALREC_LIM_T_MIN, CALREC_LIM_T_MAX - (m->n - 1) * m->t_span);
-        break;
-    default:
-        break;
-    }
-    if (kind == CALREC_TM_LORENTZ || kind == CALREC_TM_LORENTZ_CUBIC) {
-        m->p[2] = (int32_t)calt_range(s, CALREC_LIM_SPAN_MIN, (k % 2u) ? 80 * 65536 : CALREC_LIM_WIDTH_MAX);
-        m->p[3] = (int32_t)calt_range(s, CALREC_LIM_T_MIN, CALREC_LIM_T_MAX);
-    }
-    /* Unused words 0, as a checked record has them. */
-    {
-        unsigned used = kind == CALREC_TM_LINEAR ? 2u : kind == CALREC_TM_PARABOLA ? 3u :
-                        kind == CALREC_TM_LORENTZ ? 4u : kind == CALREC_TM_LORENTZ_CUBIC ? 7u :
-                        (unsigned)m->n;
-        for (i = used; i < CALREC_TM_PARAMS; i++) {
-            m->p[i] = 0;
-        }
-    }
-}
-
 #endif

@@ -11,6 +11,7 @@
 #include <stdio.h>
 
 #include "unit.h"
+#include "cal_gen.h"
 
 #if defined(__arm__) || defined(__riscv)
 #define CALT_ON_TARGET 1
@@ -33,25 +34,6 @@
 
 #define CALT_Q16 65536.0
 #define CALT_Q30 1073741824.0
-
-/* xorshift32: the same sequence on every target. */
-static inline uint32_t calt_rand(uint32_t *s)
-{
-    uint32_t x = *s;
-    x ^= x << 13;
-    x ^= x >> 17;
-    x ^= x << 5;
-    *s = x;
-    return x;
-}
-
-/* Uniform integer in [lo, hi] (hi - lo < 2^32). */
-static inline int64_t calt_range(uint32_t *s, int64_t lo, int64_t hi)
-{
-    const uint64_t span = (uint64_t)(hi - lo) + 1u;
-    const uint64_t r = ((uint64_t)calt_rand(s) << 32) | calt_rand(s);
-    return lo + (int64_t)(r % span);
-}
 
 struct calt_err {
     double max;

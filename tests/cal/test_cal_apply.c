@@ -5,45 +5,6 @@
 #include "inclino/cal.h"
 #include "cal_ref.h"
 
-/* A random valid record: every coefficient within the calrec limits; `extreme` puts the
- * nonlinearity and cross-axis terms at their limits, otherwise typical magnitudes. */
-static void random_record(uint32_t *s, int extreme, unsigned k, struct calrec *r)
-{
-    static const int32_t kinds[6] = {CALREC_TM_NONE, CALREC_TM_LINEAR, CALREC_TM_PARABOLA,
-                                     CALREC_TM_LORENTZ, CALREC_TM_PWL, CALREC_TM_LORENTZ_CUBIC};
-    unsigned a, j;
-    calrec_set_default(r);
-    r->binding.family = CALREC_FAMILY_ADIS163XX;
-    r->binding.product = 16364;
-    for (a = 0; a < 3u; a++) {
-        struct calrec_tmodel tb, ts;
-        r->acc_offset[a] = (int32_t)calt_range(s, -3277, 3277);              /* +-50 mg */
-        r->acc_gain[a] = (int32_t)calt_range(s, 1020054733, 1127428915);    /* 0.95..1.05 */
-        for (j = 0; j < 3u; j++) {
-            r->acc_misalign[a][j] = a == j ? (int32_t)calt_range(s, 1052266987, 1095216660)
-                                  : (int32_t)(extreme ? ((calt_rand(s) & 1u) ? CALREC_LIM_MISALIGN_OFFDIAG : -CALREC_LIM_MISALIGN_OFFDIAG)
-                                                      : calt_range(s, -21474836, 21474836)); /* 0.02 */
-        }
-        if (extreme) {
-            r->acc_nonlin[a][0] = (int32_t)calt_range(s, -CALREC_LIM_NONLIN_C01, CALREC_LIM_NONLIN_C01);
-            r->acc_nonlin[a][1] = (int32_t)calt_range(s, -CALREC_LIM_NONLIN_C01, CALREC_LIM_NONLIN_C01);
-            r->acc_nonlin[a][2] = (calt_rand(s) & 1u) ? CALREC_LIM_NONLIN_C23 : -CALREC_LIM_NONLIN_C23;
-            r->acc_nonlin[a][3] = (calt_rand(s) & 1u) ? CALREC_LIM_NONLIN_C23 : -CALREC_LIM_NONLIN_C23;
-        } else {
-            r->acc_nonlin[a][2] = (int32_t)calt_range(s, -53687091, 53687091); /* 0.05 */
-            r->acc_nonlin[a][3] = (int32_t)calt_range(s, -53687091, 53687091);
-        }
-        /* Temperature models: bias up to +-20 mg, scale deviation up to +-1 %, every kind. */
-        random_model(s, kinds[(k + a) % 6u], 1311, k, &tb);
-        random_model(s, kinds[(k + a + 3u) % 6u], 10737418, k + 1u, &ts);
-        r->acc_tbias[a] = tb;
-        r->acc_tscale[a] = ts;
-        r->gyro_offset[a] = (int32_t)calt_range(s, -CALREC_LIM_GYRO_OFFSET, CALREC_LIM_GYRO_OFFSET);
-        r->gyro_scale[a] = (int32_t)calt_range(s, CALREC_LIM_GAIN_MIN, CALREC_LIM_GAIN_MAX);
-    }
-    r->valid = true;
-}
-
 /* Exact chain on given off (Q16 raw), inv (Q30 raw) and the record's words; raw Q16 out. */
 static void ref_apply_state(const struct calrec *r, const double off[3], const double inv[3],
                             const fx_q16_t in[3], double out[3])
