@@ -76,7 +76,7 @@ static void model_predict(struct mdl *s, const fx_q30_t *a, const fx_q30_t *b, u
     for (i = 0; i < n; i++) {
         i128 acc = 0;
         for (j = 0; j < n; j++) acc += (i128)a[i * n + j] * s->x[j];
-        for (j = 0; j < nu; j++) acc += (i128)b[i * nu + j] * ((i128)u[j] << 16);
+        for (j = 0; j < nu; j++) acc += (i128)b[i * nu + j] * ((i128)u[j] * 65536);
         xn[i] = clampx(sat64(rsh(acc, 30)));
     }
     for (i = 0; i < n; i++)
@@ -113,9 +113,9 @@ static void model_update(struct mdl *s, const fx_q30_t *h, int64_t r, int32_t z)
     sv = hv + r;
     acc = 0;
     for (i = 0; i < n; i++) acc += (i128)h[i] * s->x[i];
-    y = ((int64_t)z << 16) - sat64(rsh(acc, 30));
+    y = ((int64_t)z * 65536) - sat64(rsh(acc, 30));
     for (i = 0; i < n; i++) {
-        k[i] = sat64(rdiv((i128)v[i] << 30, sv));
+        k[i] = sat64(rdiv((i128)v[i] * 1073741824, sv));
         w[i] = sat64(rsh((i128)sv * k[i], 30));
     }
     for (i = 0; i < n; i++) s->x[i] = clampx(sat64((i128)s->x[i] + sat64(rsh((i128)k[i] * y, 30))));
@@ -169,7 +169,7 @@ static void test_kf_bit_exact(void)
         REQUIRE(kf_init(&f, n, x0, p0) == INC_OK);
         s.n = n;
         for (i = 0; i < n; i++) {
-            s.x[i] = (int64_t)x0[i] << 16;
+            s.x[i] = (int64_t)x0[i] * 65536;
             for (j = 0; j < n; j++) s.p[i][j] = p0[i * n + j];
         }
         for (step = 0; step < 50; step++) {
@@ -188,7 +188,7 @@ static void test_kf_bit_exact(void)
             /* bound of A P A' + Q against exact math, when nothing saturated */
             for (i = 0; i < n && perr == INC_OK; i++)
                 for (j = 0; j < n; j++) {
-                    i128 e = (i128)q[i * n + j] << 60;
+                    i128 e = (i128)q[i * n + j] * ((i128)1 << 60);
                     unsigned k, l;
                     double sa = 0, err, bound;
                     for (k = 0; k < n; k++)
@@ -201,7 +201,7 @@ static void test_kf_bit_exact(void)
                         sb += (a[i * n + k] < 0 ? -a[i * n + k] : a[i * n + k]) / 1073741824.0;
                     }
                     if (sb > sa) sa = sb;
-                    err = (double)(((i128)f.p[i][j] << 60) - e) / 1152921504606846976.0;
+                    err = (double)(((i128)f.p[i][j] * ((i128)1 << 60)) - e) / 1152921504606846976.0;
                     bound = 0.5 * (1 + sa);
                     if (err < 0) err = -err;
                     if (err / bound > worst_pred) worst_pred = err / bound;
@@ -298,19 +298,19 @@ static void test_adapt_bit_exact(void)
             sum += z;
             head = (head + 1) % k;
             if (cnt == 1) {
-                x = (int64_t)z << 16;
+                x = (int64_t)z * 65536;
                 p = c.p0;
             } else {
                 int32_t dz = (int32_t)rdiv((i128)cnt * z - sum, cnt - 1);
                 i128 qq = (i128)c.c + (i128)c.d * (dz < 0 ? -(i128)dz : dz);
                 int64_t q = qq > KF_P_MAX ? KF_P_MAX : (int64_t)qq;
                 int64_t r, pm, kk;
-                r = clampp(sat64(rsh(((i128)c.a << 16) + (i128)c.b * q, 16)));
+                r = clampp(sat64(rsh(((i128)c.a * 65536) + (i128)c.b * q, 16)));
                 if (r < 0) r = -r;
                 pm = p + q;
                 if (pm > KF_P_MAX) pm = KF_P_MAX;
                 kk = (int64_t)rdiv((i128)pm << 30, pm + r);
-                x += (int64_t)rsh((i128)kk * (((int64_t)z << 16) - x), 30);
+                x += (int64_t)rsh((i128)kk * (((int64_t)z * 65536) - x), 30);
                 p = (int64_t)rsh((i128)((1 << 30) - kk) * pm, 30);
                 if (st.dz != dz || st.q != q || st.r != r || st.k != kk) mism++;
             }
