@@ -46,34 +46,6 @@ double mean_of(const std::vector<double> &v)
     return v.empty() ? 0.0 : std::accumulate(v.begin(), v.end(), 0.0) / v.size();
 }
 
-// Temperature model of B(T) or K(T) shifted/scaled into the record's deviation form.
-TModel to_deviation(const TModel &m, double ref, bool relative)
-{
-    TModel d = m;
-    std::vector<int> lin; // indices of the parameters the model is linear in
-    switch (m.kind) {
-    case TKind::None: return d;
-    case TKind::Linear: lin = {0, 1}; break;
-    case TKind::Parabola: lin = {0, 1, 2}; break;
-    case TKind::Lorentz: lin = {0, 1}; break;
-    case TKind::LorentzCubic: lin = {0, 1, 4, 5, 6}; break;
-    case TKind::Pwl:
-        for (int k = 0; k < m.n; k++) lin.push_back(k);
-        break;
-    }
-    // The constant part: p0 for every kind but PWL, where every knot carries it.
-    const bool pwl = m.kind == TKind::Pwl;
-    if (relative) {
-        for (int k : lin) d.p[k] /= ref;
-        if (pwl) for (int k = 0; k < m.n; k++) d.p[k] -= 1.0;
-        else d.p[0] -= 1.0;
-    } else {
-        if (pwl) for (int k = 0; k < m.n; k++) d.p[k] -= ref;
-        else d.p[0] -= ref;
-    }
-    return d;
-}
-
 std::string check_tmodel(const TModel &m, double ylim, const std::string &what)
 {
     auto bad = [&](const std::string &s) { return "coefficient out of range: " + what + " " + s; };
@@ -108,6 +80,34 @@ std::string check_tmodel(const TModel &m, double ylim, const std::string &what)
 }
 
 } // namespace
+
+// Temperature model of B(T) or K(T) shifted/scaled into the record's deviation form.
+TModel to_deviation(const TModel &m, double ref, bool relative)
+{
+    TModel d = m;
+    std::vector<int> lin; // indices of the parameters the model is linear in
+    switch (m.kind) {
+    case TKind::None: return d;
+    case TKind::Linear: lin = {0, 1}; break;
+    case TKind::Parabola: lin = {0, 1, 2}; break;
+    case TKind::Lorentz: lin = {0, 1}; break;
+    case TKind::LorentzCubic: lin = {0, 1, 4, 5, 6}; break;
+    case TKind::Pwl:
+        for (int k = 0; k < m.n; k++) lin.push_back(k);
+        break;
+    }
+    // The constant part: p0 for every kind but PWL, where every knot carries it.
+    const bool pwl = m.kind == TKind::Pwl;
+    if (relative) {
+        for (int k : lin) d.p[k] /= ref;
+        if (pwl) for (int k = 0; k < m.n; k++) d.p[k] -= 1.0;
+        else d.p[0] -= 1.0;
+    } else {
+        if (pwl) for (int k = 0; k < m.n; k++) d.p[k] -= ref;
+        else d.p[0] -= ref;
+    }
+    return d;
+}
 
 bool parse_tchoice(const std::string &s, TChoice &c)
 {
@@ -198,6 +198,13 @@ std::vector<std::vector<size_t>> soak_points(const std::vector<BlockMeas> &b)
 Spread spread(const std::vector<BlockMeas> &b, const std::vector<std::vector<size_t>> &soaks,
               int a, const TModel *bm, const TModel *sm)
 {
+    return spread_fn(b, soaks, a, bm ? std::function<double(double)>([bm](double t) { return bm->eval(t); }) : nullptr,
+                     sm ? std::function<double(double)>([sm](double t) { return sm->eval(t); }) : nullptr);
+}
+
+Spread spread_fn(const std::vector<BlockMeas> &b, const std::vector<std::vector<size_t>> &soaks, int a,
+                 const std::function<double(double)> &bm, const std::function<double(double)> &sm)
+{
     Spread r;
     double blo = 1e300, bhi = -1e300, mlo = 1e300, mhi = -1e300;
     double klo = 1e300, khi = -1e300, ksum = 0.0, kmlo = 1e300, kmhi = -1e300, kmsum = 0.0;
@@ -208,8 +215,8 @@ Spread spread(const std::vector<BlockMeas> &b, const std::vector<std::vector<siz
         int n = 0;
         for (size_t i : s) {
             if (!b[i].have[a]) continue;
-            const double bb = b[i].bias[a] - (bm ? bm->eval(b[i].t) : 0.0);
-            const double kk = b[i].scale[a] / (sm ? sm->eval(b[i].t) : 1.0);
+            const double bb = b[i].bias[a] - (bm ? bm(b[i].t) : 0.0);
+            const double kk = b[i].scale[a] / (sm ? sm(b[i].t) : 1.0);
             blo = std::min(blo, bb);
             bhi = std::max(bhi, bb);
             klo = std::min(klo, kk);
@@ -271,13 +278,25 @@ TemperatureFits fit_temperature(const std::vector<BlockMeas> &b,
         tf.scale[0][a] = fit_linear(sp);
         tf.bias[1][a] = fit_three_point(bmean, t_ref);
         tf.scale[1][a] = fit_three_point(smean, t_ref);
-        // The Lorentz height is bounded by the record's limit of the deviation it becomes:
-        // bias in g directly; the scale factor's height is divided by the reference scale
-        // factor (about 1), so its bound keeps a 4 % margin below the 0.125 limit.
-        double kmin = 1.0;
-        for (const auto &q : sp) kmin = std::min(kmin, q.y);
-        const double hs = 0.12 * kmin;
-        tf.bias[2][a] = fit_lorentz(bp, kLimTBiasG);
+        // The Lorentz height is bounded twice. By the record's limit of the deviation it becomes
+        // (bias in g directly; the scale factor's height is divided by the reference scale
+        // factor, about 1, so its bound keeps a 4 % margin below the 0.125 limit). And by four
+        // times the spread of the data: a taller peak is not seen in the data at all, only its
+        // flank, and with a cubic background it degenerates into a very wide Lorentz cancelled
+        // by a large y0 (a parabola in disguise, at the parameter bounds).
+        double kmin = 1.0, blo = 1e300, bhi = -1e300, klo = 1e300, khi = -1e300;
+        for (const auto &q : sp) {
+            kmin = std::min(kmin, q.y);
+            klo = std::min(klo, q.y);
+            khi = std::max(khi, q.y);
+        }
+        for (const auto &q : bp) {
+            blo = std::min(blo, q.y);
+            bhi = std::max(bhi, q.y);
+        }
+        const double hb = std::min(kLimTBiasG, 4.0 * (bhi - blo));
+        const double hs = std::min(0.12 * kmin, 4.0 * (khi - klo));
+        tf.bias[2][a] = fit_lorentz(bp, hb);
         tf.scale[2][a] = fit_lorentz(sp, hs);
         // PWL: uniform knots over the soak range at the most common soak spacing (the median
         // of consecutive differences: 10 degC for seed 002's schedule, which is not upset by an
@@ -295,7 +314,7 @@ TemperatureFits fit_temperature(const std::vector<BlockMeas> &b,
         } else {
             tf.bias[3][a].message = tf.scale[3][a].message = "PWL fit needs 2 soak points";
         }
-        tf.bias[4][a] = fit_lorentz_cubic(bp, kLimTBiasG);
+        tf.bias[4][a] = fit_lorentz_cubic(bp, hb);
         tf.scale[4][a] = fit_lorentz_cubic(sp, hs);
     }
     return tf;
@@ -437,7 +456,8 @@ std::string fit_station(const Station &st, const FitOptions &opt, CalResult &out
     } else {
         if (out.soaks.size() < 2) {
             return "degenerate data: one temperature only (" + num(out.blocks.front().t, -1) +
-                   " degC): temperature models need soaks at 3 or more temperatures; use --tmodel none "
+                   " degC): temperature models need soaks at two or more temperatures (three for the "
+                   "three-point parabola, five for Lorentz, eight for Lorentz + cubic); use --tmodel none "
                    "for an ambient-only calibration";
         }
         out.tfits = fit_temperature(out.blocks, out.soaks, t_ref);

@@ -3,11 +3,19 @@
 //   calstation simulate [--part A|<seed>] [--schedule calibration|validation|ambient]
 //                       [--cycles N] [--samples N] [--noise-seed N] --out FILE.csv
 //   calstation fit FILE.csv [--tmodel best|none|linear|parabola|lorentz|pwl|lorentz-cubic]
+//                  [--out RECORD.bin] [--seq N]
+//   calstation show RECORD.bin
 //   calstation compare [--cycles N] [--seeds S1,S2,...]   (part A plus seeded parts; default 2)
 //
 // Exit status: 0 success, 1 bad input (message on stderr, nothing written), 2 usage error.
+// error.h has no extern "C" guard of its own: give inc_err_name C linkage before any header
+// includes it.
+extern "C" {
+#include "inclino/error.h"
+}
 #include "inclino/calstation/compare.hpp"
 #include "inclino/calstation/fit.hpp"
+#include "inclino/calstation/record.hpp"
 #include "inclino/calstation/station.hpp"
 
 #include <algorithm>
@@ -15,6 +23,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -28,6 +37,8 @@ int usage()
                "  calstation simulate [--part A|<seed>] [--schedule calibration|validation|ambient]\n"
                "                      [--cycles N] [--samples N] [--noise-seed N] --out FILE.csv\n"
                "  calstation fit FILE.csv [--tmodel best|none|linear|parabola|lorentz|pwl|lorentz-cubic]\n"
+               "                 [--out RECORD.bin] [--seq N]\n"
+               "  calstation show RECORD.bin\n"
                "  calstation compare [--cycles N] [--seeds S1,S2,...]\n",
                stderr);
     return 2;
@@ -100,12 +111,17 @@ int cmd_simulate(int argc, char **argv)
 
 int cmd_fit(int argc, char **argv)
 {
-    std::string in;
+    std::string in, out;
     FitOptions opt;
+    uint64_t seq = 1;
     for (int i = 0; i < argc; i++) {
         const std::string a = argv[i];
         if (a == "--tmodel" && i + 1 < argc) {
             if (!parse_tchoice(argv[++i], opt.tmodel)) return usage();
+        } else if (a == "--out" && i + 1 < argc) {
+            out = argv[++i];
+        } else if (a == "--seq" && i + 1 < argc) {
+            if (!parse_u64(argv[++i], seq) || seq > 0xFFFFFFFFull) return usage();
         } else if (a[0] != '-' && in.empty()) {
             in = a;
         } else {
@@ -113,6 +129,7 @@ int cmd_fit(int argc, char **argv)
         }
     }
     if (in.empty()) return usage();
+    // Any error below: message on stderr, exit 1, and no record file is written.
     Station st;
     std::string e = read_station_file(in, st);
     if (!e.empty()) {
@@ -126,6 +143,88 @@ int cmd_fit(int argc, char **argv)
         return 1;
     }
     std::fputs(res.report.c_str(), stdout);
+    struct calrec rec;
+    e = to_calrec(res, st, rec);
+    FwCheck fw;
+    if (e.empty()) e = firmware_check(st, rec, fw);
+    if (!e.empty()) {
+        std::fprintf(stderr, "calstation: %s: %s\n", in.c_str(), e.c_str());
+        return 1;
+    }
+    std::printf("firmware check (fixed point, firmware/cal, on the quantised record): %zu acc rows, "
+                "max |firmware - double model| = %.2f LSB Q16; max |corrected - true| = %.3f mg "
+                "(tilt rows within +-30 deg: %.3f mg)\n",
+                fw.rows, fw.max_lsb, fw.max_err_mg, fw.max_tilt_err_mg);
+    if (!out.empty()) {
+        std::vector<uint8_t> img;
+        e = encode_record(rec, static_cast<uint32_t>(seq), img);
+        if (!e.empty()) {
+            std::fprintf(stderr, "calstation: %s\n", e.c_str());
+            return 1;
+        }
+        if (!write_file(out, std::string(img.begin(), img.end()))) {
+            std::fprintf(stderr, "calstation: cannot write '%s'\n", out.c_str());
+            return 1;
+        }
+        std::printf("wrote %s: calibration record format %u, %zu bytes, seq %u, CRC-32 0x%08X\n", out.c_str(),
+                    CALREC_VERSION, img.size(), static_cast<unsigned>(seq),
+                    calrec_get_le32(&img[CALREC_OFF_CRC]));
+    }
+    return 0;
+}
+
+int cmd_show(int argc, char **argv)
+{
+    if (argc != 1) return usage();
+    std::ifstream f(argv[0], std::ios::binary);
+    if (!f) {
+        std::fprintf(stderr, "calstation: cannot open '%s'\n", argv[0]);
+        return 1;
+    }
+    std::vector<uint8_t> img((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+    if (img.size() < CALREC_OFF_BINDING + 24u) {
+        std::fprintf(stderr, "calstation: %s: %zu bytes, not a calibration record\n", argv[0], img.size());
+        return 1;
+    }
+    // Decode against the binding the image itself carries: this shows what is inside; the
+    // firmware decodes against the identity it reads from the part.
+    struct calrec_binding b;
+    b.family = calrec_get_le32(&img[CALREC_OFF_BINDING]);
+    b.product = calrec_get_le32(&img[CALREC_OFF_BINDING + 4]);
+    b.revision = calrec_get_le32(&img[CALREC_OFF_BINDING + 8]);
+    b.serial = calrec_get_le32(&img[CALREC_OFF_BINDING + 12]);
+    b.lot_id1 = calrec_get_le32(&img[CALREC_OFF_BINDING + 16]);
+    b.lot_id2 = calrec_get_le32(&img[CALREC_OFF_BINDING + 20]);
+    struct calrec r;
+    uint32_t seq = 0;
+    const int e = calrec_decode(img.data(), img.size(), &b, &r, &seq);
+    if (e != INC_OK) {
+        std::fprintf(stderr, "calstation: %s: calrec_decode refused the image (%s)\n", argv[0], inc_err_name(e));
+        return 1;
+    }
+    const CalResult c = from_calrec(r);
+    static const char *const ax[3] = {"x", "y", "z"};
+    std::printf("record: format %u, seq %u, binding family %u product %u revision %u serial %u lot %u/%u\n",
+                calrec_get_le32(&img[CALREC_OFF_VERSION]), seq, b.family, b.product, b.revision, b.serial,
+                b.lot_id1, b.lot_id2);
+    for (int a = 0; a < 3; a++) {
+        std::printf("acc %s: offset %+.6f g  gain %.7f  M row % .7f % .7f % .7f  nonlin c0..c3 % .6f % .6f % .6f % .6f\n",
+                    ax[a], c.acc_offset[a], c.acc_gain[a], c.acc_misalign[a][0], c.acc_misalign[a][1],
+                    c.acc_misalign[a][2], c.acc_nonlin[a][0], c.acc_nonlin[a][1], c.acc_nonlin[a][2], c.acc_nonlin[a][3]);
+        for (int q = 0; q < 2; q++) {
+            const TModel &m = q ? c.acc_tscale[a] : c.acc_tbias[a];
+            std::printf("      %s: %s", q ? "tscale" : "tbias ", tkind_name(m.kind));
+            if (m.kind != TKind::None && m.kind != TKind::Lorentz) std::printf(" t_ref %.3f t_span %.3f", m.t_ref, m.t_span);
+            if (m.kind == TKind::Pwl) std::printf(" n %d", m.n);
+            std::printf(" p");
+            const int np = m.kind == TKind::Pwl ? m.n : m.kind == TKind::Linear ? 2 : m.kind == TKind::Parabola ? 3
+                         : m.kind == TKind::Lorentz ? 4 : m.kind == TKind::LorentzCubic ? 7 : 0;
+            for (int k = 0; k < np; k++) std::printf(" %.7g", m.p[k]);
+            std::printf("\n");
+        }
+    }
+    std::printf("gyro: offset %+.5f %+.5f %+.5f deg/s, scale %.7f %.7f %.7f\n", c.gyro_offset[0], c.gyro_offset[1],
+                c.gyro_offset[2], c.gyro_scale[0], c.gyro_scale[1], c.gyro_scale[2]);
     return 0;
 }
 
@@ -178,5 +277,6 @@ int main(int argc, char **argv)
     if (cmd == "simulate") return cmd_simulate(argc - 2, argv + 2);
     if (cmd == "fit") return cmd_fit(argc - 2, argv + 2);
     if (cmd == "compare") return cmd_compare(argc - 2, argv + 2);
+    if (cmd == "show") return cmd_show(argc - 2, argv + 2);
     return usage();
 }

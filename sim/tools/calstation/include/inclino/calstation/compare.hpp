@@ -15,7 +15,9 @@
 
 namespace calstation {
 
-// One quantity of one axis: index 0 = raw (no compensation), 1 + k = TemperatureFits kind k.
+// One quantity of one axis: index 0 = raw (no compensation), 1 + k = TemperatureFits kind k,
+// and the last = the best model (Lorentz + cubic) quantised into the record and evaluated by the
+// firmware (cal_tmodel_eval, fixed point).
 struct CompareCell {
     bool ok = false;
     double in_sample = 0.0; // soak-point means, paper's definition (mg or ppm/degC)
@@ -26,7 +28,8 @@ struct CompareCell {
 struct CompareAxis {
     std::string part;
     int axis = 0;
-    std::array<CompareCell, 1 + TemperatureFits::kKinds> bias, scale;
+    static constexpr int kCells = 2 + TemperatureFits::kKinds;
+    std::array<CompareCell, kCells> bias, scale;
 };
 
 struct CompareConfig {

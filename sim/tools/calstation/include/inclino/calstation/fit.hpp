@@ -24,6 +24,7 @@
 #include "inclino/calstation/tmodel.hpp"
 
 #include <array>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -91,9 +92,16 @@ std::string block_measurements(const Station &st, std::vector<BlockMeas> &out);
 std::vector<std::vector<size_t>> soak_points(const std::vector<BlockMeas> &b);
 Spread spread(const std::vector<BlockMeas> &b, const std::vector<std::vector<size_t>> &soaks,
               int axis, const TModel *bias_model, const TModel *scale_model);
+// The same with any evaluators of B(T) (g) and K(T) (g/g); an empty function means "none".
+Spread spread_fn(const std::vector<BlockMeas> &b, const std::vector<std::vector<size_t>> &soaks, int axis,
+                 const std::function<double(double)> &bias_model, const std::function<double(double)> &scale_model);
 // Fit every kind on the blocks (t_ref only matters for the three-point ambient point).
 TemperatureFits fit_temperature(const std::vector<BlockMeas> &b,
                                 const std::vector<std::vector<size_t>> &soaks, double t_ref);
+
+// B(T) (relative = false) or K(T) (relative = true) turned into the record's deviation form:
+// B - ref, or K / ref - 1 (ref = the model's value at t_ref).
+TModel to_deviation(const TModel &m, double ref, bool relative);
 
 // The whole pipeline. Returns "" on success, else a message naming the problem (and the line
 // where there is one); then `out` must not be used.
