@@ -1,7 +1,8 @@
 // calstation - the calibration-station tool (docs/calibration.md).
 //
 //   calstation simulate [--part A|<seed>] [--schedule calibration|validation|ambient]
-//                       [--cycles N] [--samples N] [--noise-seed N] --out FILE.csv
+//                       [--cycles N] [--samples N] [--noise-seed N] [--binding F,P,R,S,L1,L2]
+//                       --out FILE.csv
 //   calstation fit FILE.csv [--tmodel best|none|linear|parabola|lorentz|pwl|lorentz-cubic]
 //                  [--out RECORD.bin] [--seq N]
 //   calstation show RECORD.bin
@@ -35,7 +36,8 @@ int usage()
 {
     std::fputs("usage:\n"
                "  calstation simulate [--part A|<seed>] [--schedule calibration|validation|ambient]\n"
-               "                      [--cycles N] [--samples N] [--noise-seed N] --out FILE.csv\n"
+               "                      [--cycles N] [--samples N] [--noise-seed N] [--binding F,P,R,S,L1,L2]\n"
+               "                      --out FILE.csv\n"
                "  calstation fit FILE.csv [--tmodel best|none|linear|parabola|lorentz|pwl|lorentz-cubic]\n"
                "                 [--out RECORD.bin] [--seq N]\n"
                "  calstation show RECORD.bin\n"
@@ -95,6 +97,19 @@ int cmd_simulate(int argc, char **argv)
             cfg.noise_seed = v;
         } else if (a == "--out") {
             out = val;
+        } else if (a == "--binding") {
+            // family,product,revision,serial,lot_id1,lot_id2 of the part the record is for
+            std::string b = val;
+            size_t pos = 0;
+            for (int k = 0; k < 6; k++) {
+                const size_t c = b.find(',', pos);
+                if ((k < 5) != (c != std::string::npos)) return usage();
+                const std::string tok = b.substr(pos, c == std::string::npos ? std::string::npos : c - pos);
+                if (!parse_u64(tok.c_str(), v) || v > 0xFFFFFFFFull) return usage();
+                cfg.binding[k] = static_cast<uint32_t>(v);
+                pos = c + 1;
+            }
+            cfg.have_binding = true;
         } else {
             return usage();
         }

@@ -37,6 +37,7 @@ public:
         st_.binding = {3u, 16364u, 0u,
                        static_cast<uint32_t>(cfg.part.paper ? 0x0A01u : (0x0B00u + (cfg.part.curve_seed & 0xFFu))),
                        0u, 0u};
+        if (cfg.have_binding) st_.binding = cfg.binding;
     }
 
     Station run()

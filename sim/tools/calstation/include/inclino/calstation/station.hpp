@@ -87,6 +87,8 @@ struct SimConfig {
     double die_tau_s = 600.0;    // die temperature lag behind the chamber air
     double temp_noise_c = 0.05;  // on-board temperature sensor noise, rms
     uint64_t noise_seed = 1;
+    bool have_binding = false;   // override the simulated part's identity (default: an ADIS16364)
+    std::array<uint32_t, 6> binding{};
 };
 
 // Counts scale of the simulated part (an ADIS16364-like IMU: sensors.md 3.x).
