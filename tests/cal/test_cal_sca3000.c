@@ -85,10 +85,10 @@ static int read_mean(unsigned n, fx_q16_t mean[3], int16_t last[3])
 {
     struct cal_avg a;
     unsigned k, i;
-    int err;
     cal_avg_reset(&a);
     for (k = 0; k < n; k++) {
         int32_t g[3];
+        int err;
         sim_clock_advance_to(&board.clk, board.clk.now_ns + SAMPLE_NS);
         err = sca3000_read_accel(&dev, last);
         if (err != INC_OK) return err;
