@@ -82,7 +82,7 @@ static void test_identity_exact(void)
 
 static void sweep_apply(int extreme, double bound_state, double bound_model, const char *name)
 {
-    const unsigned records = CALT_DENSITY(2000u, 40u), samples = CALT_DENSITY(200u, 25u);
+    const unsigned records = CALT_DENSITY(2000u, 200u), samples = CALT_DENSITY(200u, 50u);
     struct calt_err es = {0.0, 0}, em = {0.0, 0};
     uint32_t s = extreme ? 0xBEEFu : 0xCAFEu;
     unsigned k, j, refused = 0;
@@ -199,7 +199,7 @@ static void test_plausibility_and_range(void)
 
 static void test_gyro(void)
 {
-    const unsigned records = CALT_DENSITY(3000u, 60u), samples = CALT_DENSITY(300u, 30u);
+    const unsigned records = CALT_DENSITY(3000u, 300u), samples = CALT_DENSITY(300u, 50u);
     struct calt_err e = {0.0, 0};
     uint32_t s = 41u;
     unsigned k, j;

@@ -55,7 +55,7 @@ static void test_flip_bound(void)
     /* Random valid pairs: offset within 0.5 LSB of the exact (A+ + A-)/2, gain exact. */
     uint32_t s = 99u;
     struct calt_err e = {0.0, 0};
-    const unsigned n = CALT_DENSITY(1000000u, 20000u);
+    const unsigned n = CALT_DENSITY(1000000u, 200000u);
     unsigned i;
     for (i = 0; i < n; i++) {
         const int64_t g2 = calt_range(&s, 2 * (int64_t)(CAL_GAIN_MIN >> 14) + 1, 2 * (int64_t)(CAL_GAIN_MAX >> 14) - 1);

@@ -10,7 +10,7 @@
 static void sweep_kind(const char *name, int32_t kind, double bound)
 {
     static const int32_t ylims[2] = {CALREC_LIM_TBIAS, CALREC_LIM_TSCALE};
-    const unsigned models = CALT_DENSITY(3000u, 60u), temps = CALT_DENSITY(400u, 40u);
+    const unsigned models = CALT_DENSITY(3000u, 300u), temps = CALT_DENSITY(400u, 80u);
     struct calt_err e = {0.0, 0};
     uint32_t s = 0x1234567u + (uint32_t)kind;
     unsigned f, k, j;

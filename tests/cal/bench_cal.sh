@@ -1,0 +1,33 @@
+#!/bin/sh
+# Instruction counts per call of the firmware/cal functions on the host, callgrind counting only
+# the function itself (and its callees: fx). Usage:
+#   tests/cal/bench_cal.sh <host build dir>
+# Prints a markdown table for docs/benchmarks.md (Calibration). Needs valgrind.
+set -eu
+bin="${1:?usage: bench_cal.sh <host build dir>}/tests/cal/bench_cal"
+command -v valgrind >/dev/null || { echo "valgrind not found" >&2; exit 1; }
+[ -x "$bin" ] || { echo "$bin not built" >&2; exit 1; }
+n=100000
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+echo "| function | case | instructions / call |"
+echo "|---|---|---:|"
+while read -r fn case; do
+    valgrind --tool=callgrind --collect-atstart=no --toggle-collect="$fn" \
+        --callgrind-out-file="$tmp/cg.out" "$bin" "$case" >/dev/null 2>"$tmp/log"
+    total=$(sed -n 's/.*Collected : *\([0-9]*\).*/\1/p' "$tmp/log")
+    [ -n "$total" ] || { cat "$tmp/log" >&2; exit 1; }
+    awk -v f="$fn" -v c="$case" -v t="$total" -v n="$n" 'BEGIN { printf "| %s | %s | %.1f |\n", f, c, t / n }'
+done <<LIST
+cal_acc_apply acc_apply
+cal_gyro_apply gyro_apply
+cal_acc_set_temp acc_set_temp
+cal_tmodel_eval tmodel_linear
+cal_tmodel_eval tmodel_parabola
+cal_tmodel_eval tmodel_lorentz
+cal_tmodel_eval tmodel_pwl
+cal_tmodel_eval tmodel_lorentz_cubic
+cal_flip flip
+cal_avg_add avg_add
+cal_turn_add turn_add
+LIST
