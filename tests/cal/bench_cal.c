@@ -165,7 +165,7 @@ __attribute__((noinline)) static int empty_apply(const void *st, const fx_q16_t 
     return st != NULL;
 }
 
-__attribute__((noinline)) static int empty_temp(void *st, fx_q16_t t)
+__attribute__((noinline)) static int empty_temp(const void *st, fx_q16_t t)
 {
     __asm__ volatile("" ::: "memory");
     return st != NULL && t != 0;
