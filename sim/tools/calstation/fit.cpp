@@ -353,16 +353,15 @@ std::array<double, 3> apply_double(const CalResult &c, const std::array<double, 
 
 namespace {
 
-std::string static_report(const Station &st, const CalResult &c, CalResult &mut)
+std::string static_report(const Station &st, const CalResult &flip, const CalResult &lin, const CalResult &c)
 {
     // Static accuracy over the ambient-temperature rows, stage by stage.
     struct Acc { double max = 0.0, ss = 0.0; int n = 0; };
     Acc stage[3], tilt[3];
-    CalResult diag = c, lin = c;
+    CalResult diag = flip;
     for (int i = 0; i < 3; i++) {
         for (int j = 0; j < 3; j++) diag.acc_misalign[i][j] = (i == j);
         diag.acc_nonlin[i] = {0, 0, 0, 0};
-        lin.acc_nonlin[i] = {0, 0, 0, 0};
     }
     for (const auto &r : st.rows) {
         if (r.kind != RowKind::Acc || std::fabs(r.temp_c - st.t_ref_c) > kSoakGapC) continue;
@@ -385,9 +384,8 @@ std::string static_report(const Station &st, const CalResult &c, CalResult &mut)
             }
         }
     }
-    (void)mut;
     std::string out = "static accuracy at t_ref (ambient rows), |a_corrected - a_true| in mg:\n";
-    const char *names[3] = {"offset+gain+temperature", "+ misalignment (3x3)", "+ nonlinearity (cubic)"};
+    const char *names[3] = {"flip offset/gain + temp.", "+ misalignment (linear LS)", "+ nonlinearity (record)"};
     for (int s = 0; s < 3; s++) {
         char b[200];
         std::snprintf(b, sizeof b, "  %-26s all rows: max %7.3f rms %7.3f | within +-30 deg: max %7.3f rms %7.3f\n",
@@ -396,6 +394,63 @@ std::string static_report(const Station &st, const CalResult &c, CalResult &mut)
         out += b;
     }
     return out;
+}
+
+} // namespace
+
+namespace {
+
+// Step 3 on r (offset, gain and temperature models already set): per element i, least squares
+// of P_i . f - c0 [- c2 v^2 - c3 v^3] = v over every acc row; folds c0 into the offset and sets
+// M = P^-1 and the nonlinearity terms (only with allow_nl and >= 5 distinct positions).
+std::string fit_elements(const Station &st, const std::vector<const Row *> &acc, CalResult &out, bool allow_nl)
+{
+    Eigen::Matrix3d p = Eigen::Matrix3d::Identity();
+    for (int i = 0; i < 3; i++) {
+        std::set<long> distinct;
+        for (const Row *r : acc) distinct.insert(std::lround(r->u[i] * 100.0));
+        const bool nl = allow_nl && distinct.size() >= 5;
+        out.have_nonlin |= nl;
+        const int ncol = nl ? 6 : 4;
+        Eigen::MatrixXd m(acc.size(), ncol);
+        Eigen::VectorXd y(acc.size());
+        for (size_t k = 0; k < acc.size(); k++) {
+            const Row &r = *acc[k];
+            const double b = out.acc_offset[i] + out.acc_tbias[i].eval(r.temp_c);
+            const double g = out.acc_gain[i] * (1.0 + out.acc_tscale[i].eval(r.temp_c));
+            const double v = (r.v[i] * st.acc_lsb_g - b) / g;
+            m(k, 0) = r.u[0];
+            m(k, 1) = r.u[1];
+            m(k, 2) = r.u[2];
+            m(k, 3) = -1.0;
+            if (nl) {
+                m(k, 4) = -v * v;
+                m(k, 5) = -v * v * v;
+            }
+            y(k) = v;
+        }
+        Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(m);
+        qr.setThreshold(1e-9);
+        if (qr.rank() < ncol) {
+            return "degenerate data: the positions do not determine axis " + std::string(kAxis[i]) +
+                   " (the acc rows must include at least four non-coplanar directions, e.g. the six faces)";
+        }
+        const Eigen::VectorXd c = qr.solve(y);
+        for (int j = 0; j < 3; j++) p(i, j) = c(j);
+        // c0 folded into the offset (n = v + c0 == (r - (b - k c0)) / k; k(T) differs from the
+        // gain at t_ref by the tscale deviation, < 1e-2 * c0).
+        out.acc_offset[i] -= out.acc_gain[i] * c(3);
+        out.acc_nonlin[i] = {0.0, 0.0, nl ? c(4) : 0.0, nl ? c(5) : 0.0};
+    }
+    if (std::fabs(p.determinant()) < 1e-6) {
+        return "degenerate data: the sensed directions are (nearly) parallel; check the station positions";
+    }
+    const Eigen::Matrix3d minv = p.inverse();
+    for (int i = 0; i < 3; i++) {
+        for (int j = 0; j < 3; j++) out.acc_misalign[i][j] = minv(i, j);
+    }
+
+    return "";
 }
 
 } // namespace
@@ -483,50 +538,13 @@ std::string fit_station(const Station &st, const FitOptions &opt, CalResult &out
     }
 
     // ---- 3. misalignment and nonlinearity, per element ----
-    Eigen::Matrix3d p = Eigen::Matrix3d::Identity();
-    for (int i = 0; i < 3; i++) {
-        std::set<long> distinct;
-        for (const Row *r : acc) distinct.insert(std::lround(r->u[i] * 100.0));
-        const bool nl = distinct.size() >= 5;
-        out.have_nonlin |= nl;
-        const int ncol = nl ? 6 : 4;
-        Eigen::MatrixXd m(acc.size(), ncol);
-        Eigen::VectorXd y(acc.size());
-        for (size_t k = 0; k < acc.size(); k++) {
-            const Row &r = *acc[k];
-            const double b = out.acc_offset[i] + out.acc_tbias[i].eval(r.temp_c);
-            const double g = out.acc_gain[i] * (1.0 + out.acc_tscale[i].eval(r.temp_c));
-            const double v = (r.v[i] * st.acc_lsb_g - b) / g;
-            m(k, 0) = r.u[0];
-            m(k, 1) = r.u[1];
-            m(k, 2) = r.u[2];
-            m(k, 3) = -1.0;
-            if (nl) {
-                m(k, 4) = -v * v;
-                m(k, 5) = -v * v * v;
-            }
-            y(k) = v;
-        }
-        Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(m);
-        qr.setThreshold(1e-9);
-        if (qr.rank() < ncol) {
-            return "degenerate data: the positions do not determine axis " + std::string(kAxis[i]) +
-                   " (the acc rows must include at least four non-coplanar directions, e.g. the six faces)";
-        }
-        const Eigen::VectorXd c = qr.solve(y);
-        for (int j = 0; j < 3; j++) p(i, j) = c(j);
-        // c0 folded into the offset (n = v + c0 == (r - (b - k c0)) / k; k(T) differs from the
-        // gain at t_ref by the tscale deviation, < 1e-2 * c0).
-        out.acc_offset[i] -= out.acc_gain[i] * c(3);
-        out.acc_nonlin[i] = {0.0, 0.0, nl ? c(4) : 0.0, nl ? c(5) : 0.0};
-    }
-    if (std::fabs(p.determinant()) < 1e-6) {
-        return "degenerate data: the sensed directions are (nearly) parallel; check the station positions";
-    }
-    const Eigen::Matrix3d minv = p.inverse();
-    for (int i = 0; i < 3; i++) {
-        for (int j = 0; j < 3; j++) out.acc_misalign[i][j] = minv(i, j);
-    }
+    // Run twice: linear only (for the report's middle stage) and with the nonlinearity terms
+    // where a tilt sweep allows them (the record).
+    const CalResult stage_flip = out;
+    CalResult stage_lin = out;
+    e = fit_elements(st, acc, stage_lin, false);
+    if (e.empty()) e = fit_elements(st, acc, out, true);
+    if (!e.empty()) return e;
 
     // ---- 4. gyro ----
     {
@@ -632,7 +650,7 @@ std::string fit_station(const Station &st, const FitOptions &opt, CalResult &out
         rep += std::string("  chosen for the record: ") + tchoice_name(opt.tmodel) +
                (opt.tmodel == TChoice::Best ? " (= lorentz+cubic)" : "") + "\n";
     }
-    rep += static_report(st, out, out);
+    rep += static_report(st, stage_flip, stage_lin, out);
     if (!out.have_nonlin) rep += "nonlinearity: not fitted (needs a tilt sweep of >= 5 positions per axis)\n";
     if (out.have_gyro) {
         std::snprintf(b, sizeof b, "gyro: offset %.4f %.4f %.4f deg/s, scale %.6f %.6f %.6f\n", out.gyro_offset[0],
