@@ -336,6 +336,7 @@ static void result_start(struct gyrocal *g, enum gyrocal_mode mode, struct gyroc
     }
     res->samples = 0;
     res->missed = 0;
+    res->t_avg_start_ns = res->t_avg_end_ns = 0;
     res->t_start_ns = res->t_end_ns = hal_now_ns(g->imu->cfg.hal);
 }
 
@@ -539,6 +540,11 @@ static int run_autonull(struct gyrocal *g, struct gyrocal_result *res, enum adis
         return abort_restore(g, res, during(g, m0), prd, avg);
     }
     if (err == INC_OK) {
+        /* the part nulls its filter output: the last 2 N - 1 samples, N = 64 */
+        const uint64_t span = (uint64_t)(2u * (1u << GYROCAL_AUTONULL_M) - 1u) *
+                              adis_imu_current_period_ns(g->imu);
+        res->t_avg_end_ns = hal_now_ns(g->imu->cfg.hal);
+        res->t_avg_start_ns = res->t_avg_end_ns > span ? res->t_avg_end_ns - span : 0u;
         err = adis_imu_command(g->imu, ADIS_IMU_CMD_AUTONULL);
         still_restart_window(&g->still);
     }
@@ -562,6 +568,10 @@ static int run_manual_average(struct gyrocal *g, struct gyrocal_result *res, str
             break;
         }
         sums_add(a, &s);
+        if (a->n == 1u) {
+            res->t_avg_start_ns = s.t_ns;
+        }
+        res->t_avg_end_ns = s.t_ns;
         if (still_window_count(&g->still) != w) {
             *why = during(g, m0);  /* judged once per window: stop at the first motion */
             if (*why != GYROCAL_DONE) {
@@ -666,6 +676,8 @@ int gyrocal_run(struct gyrocal *g, enum gyrocal_mode mode, struct gyrocal_result
             return finish(g, res, during(g, m0), reason_err(during(g, m0)));
         }
         if (err == INC_OK) {
+            res->t_avg_start_ns = hal_now_ns(g->imu->cfg.hal);
+            res->t_avg_end_ns = res->t_avg_start_ns + (uint64_t)ADIS_IMU_PRECISION_AUTONULL_MS * 1000000u;
             err = adis_imu_command(g->imu, ADIS_IMU_CMD_PRECISION_AUTONULL);
             still_restart_window(&g->still); /* samples before the 30 s gap: not one window */
         }

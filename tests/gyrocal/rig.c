@@ -3,6 +3,7 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 struct rig rig;
@@ -40,9 +41,75 @@ static void error_apply(void *ctx, const struct sim_inertial_input *in,
         unsigned i;
         for (i = 0; i < 3u; i++) {
             r->acc_sum[i] += rig_bias_dps(i);
+            r->acc_sum_reg[i] += sim_noise_bias_now(&r->noise, SIM_NOISE_GYRO(i)) +
+                                 sim_adis_imu_gyro_offset_dps(&r->part, i);
         }
         r->acc_n++;
     }
+    if (r->hist_on) {
+        unsigned i;
+        if (r->hist_n == r->hist_cap) {
+            const size_t cap = r->hist_cap == 0u ? 65536u : 2u * r->hist_cap;
+            uint64_t *t = realloc(r->hist_t, cap * sizeof(*t));
+            double *c = t != NULL ? realloc(r->hist_c, 3u * cap * sizeof(*c)) : NULL;
+            if (t != NULL) {
+                r->hist_t = t;
+            }
+            if (c == NULL) {
+                r->hist_on = false; /* out of memory: rig_bias_window reports no data */
+                r->hist_n = 0;
+                return;
+            }
+            r->hist_c = c;
+            r->hist_cap = cap;
+        }
+        r->hist_t[r->hist_n] = t_ns;
+        for (i = 0; i < 3u; i++) {
+            r->hist_c[3u * r->hist_n + i] =
+                (r->hist_n > 0u ? r->hist_c[3u * (r->hist_n - 1u) + i] : 0.0) +
+                sim_noise_bias_now(&r->noise, SIM_NOISE_GYRO(i));
+        }
+        r->hist_n++;
+    }
+}
+
+int rig_history(void)
+{
+    rig.hist_on = true;
+    rig.hist_n = 0;
+    return 0;
+}
+
+/* Index of the last recorded sample with time <= t, or -1. */
+static long hist_find(uint64_t t)
+{
+    long lo = 0, hi = (long)rig.hist_n - 1;
+    if (rig.hist_n == 0u || rig.hist_t[0] > t) {
+        return -1;
+    }
+    while (lo < hi) {
+        const long mid = (lo + hi + 1) / 2;
+        if (rig.hist_t[mid] <= t) {
+            lo = mid;
+        } else {
+            hi = mid - 1;
+        }
+    }
+    return lo;
+}
+
+int rig_bias_window(uint64_t t1, uint64_t t2, double out[3])
+{
+    const long a = hist_find(t1), b = hist_find(t2);
+    unsigned i;
+    if (b < 0 || b <= a) {
+        return -1;
+    }
+    for (i = 0; i < 3u; i++) {
+        const double ca = a >= 0 ? rig.hist_c[3u * (size_t)a + i] : 0.0;
+        out[i] = (rig.hist_c[3u * (size_t)b + i] - ca) / (double)(b - a);
+    }
+    return 0;
 }
 
 static int spy_transfer(void *ctx, struct spi_dev *dev, const uint16_t *tx, uint16_t *rx,
@@ -71,6 +138,8 @@ int rig_setup(enum sim_adis_imu_variant v, const struct sim_noise_cfg *ncfg,
               const struct gyrocal_cfg *gcfg)
 {
     int err;
+    free(rig.hist_t);
+    free(rig.hist_c);
     memset(&rig, 0, sizeof(rig));
     err = sim_board_init(&rig.board);
     if (err != 0) {
@@ -147,17 +216,29 @@ double rig_bias_dps(unsigned axis)
     return b;
 }
 
-void rig_bias_mean(double seconds, double out[3])
+void rig_bias_mean2(double seconds, double out[3], double out_reg[3])
 {
     unsigned i;
     rig.acc_on = true;
     rig.acc_n = 0;
-    rig.acc_sum[0] = rig.acc_sum[1] = rig.acc_sum[2] = 0.0;
+    for (i = 0; i < 3u; i++) {
+        rig.acc_sum[i] = rig.acc_sum_reg[i] = 0.0;
+    }
     hal_delay_until(&rig.board.hal, rig_now() + (uint64_t)(seconds * 1e9 + 0.5));
     rig.acc_on = false;
     for (i = 0; i < 3u; i++) {
         out[i] = rig.acc_n > 0u ? rig.acc_sum[i] / (double)rig.acc_n : rig_bias_dps(i);
+        if (out_reg != NULL) {
+            out_reg[i] = rig.acc_n > 0u ? rig.acc_sum_reg[i] / (double)rig.acc_n
+                                        : sim_noise_bias_now(&rig.noise, SIM_NOISE_GYRO(i)) +
+                                              sim_adis_imu_gyro_offset_dps(&rig.part, i);
+        }
     }
+}
+
+void rig_bias_mean(double seconds, double out[3])
+{
+    rig_bias_mean2(seconds, out, NULL);
 }
 
 unsigned rig_cmd_seen(uint16_t w)

@@ -55,8 +55,14 @@ struct rig {
     struct rig_temp temp;
     /* bias accumulation */
     bool acc_on;
-    double acc_sum[3];
+    double acc_sum[3];       /* achieved bias: error model + offset register + correction */
+    double acc_sum_reg[3];   /* the same without the processor-side correction */
     uint64_t acc_n;
+    /* history of the error model's correlated bias (rig_history) */
+    bool hist_on;
+    size_t hist_n, hist_cap;
+    uint64_t *hist_t;        /* sample times */
+    double *hist_c;          /* 3 cumulative sums per sample */
 };
 
 extern struct rig rig;
@@ -72,8 +78,16 @@ uint64_t rig_now(void);
 void rig_wait_ms(uint32_t ms);
 /* Achieved bias of axis i now: correlated error-model bias + user offset + correction. */
 double rig_bias_dps(unsigned axis);
-/* Average the achieved bias over the next `seconds` of virtual time. */
+/* Average the achieved bias over the next `seconds` of virtual time (out_reg, may be NULL:
+ * without the processor-side correction). */
+void rig_bias_mean2(double seconds, double out[3], double out_reg[3]);
 void rig_bias_mean(double seconds, double out[3]);
+/* Record the error model's correlated bias per internal sample from now on (host benchmark:
+ * allocates; rig_setup frees). Returns 0 or -1 (out of memory). */
+int rig_history(void);
+/* Mean correlated bias (error model only: no offset, no correction) of the samples taken in
+ * (t1, t2]; -1 when there are none recorded. */
+int rig_bias_window(uint64_t t1, uint64_t t2, double out[3]);
 /* GLOB_CMD words seen so far equal to w. */
 unsigned rig_cmd_seen(uint16_t w);
 /* Violations on the board (printed when any). */

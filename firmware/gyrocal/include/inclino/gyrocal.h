@@ -132,6 +132,10 @@ struct gyrocal_result {
     int32_t verify_mean_q16[3];   /* corrected output mean in the verification, deg/s Q16.16 */
     int32_t verify_limit_q16[3];  /* its limit */
     uint32_t samples;             /* MANUAL: samples averaged */
+    uint64_t t_avg_start_ns;      /* the span whose average the new offsets represent (HAL time): */
+    uint64_t t_avg_end_ns;        /* AUTONULL the 2 x 64 - 1 filter taps before GLOB_CMD[0],
+                                     PRECISION the 30 s after GLOB_CMD[4], MANUAL first to last
+                                     sample; 0 when the mode did not get that far */
     uint32_t missed;              /* data-ready edges missed while reading */
     uint64_t t_start_ns, t_end_ns;
 };
