@@ -149,7 +149,7 @@ int main(void)
     {
         struct still_cfg cfg;
         memset(&cfg, 0, sizeof(cfg));
-        cfg.window = 256;
+        cfg.window = 819;
         cfg.windows_required = 3;
         cfg.gyro_var_max = 409;
         cfg.accel_var_max = 43;
@@ -167,10 +167,10 @@ int main(void)
         for (i = 0; i < BENCH_N; i++) {
             (void)still_push(&st, &in3[i][0], &in3[i][3], &f);
         }
-        report("still_push(W=256,all_tests)", ticks(), t0);
+        report("still_push(W=819,all_tests)", ticks(), t0);
     }
     {
-        const struct still_thermal_cfg tc = {256, 30, 1};
+        const struct still_thermal_cfg tc = {819, 30, 1};
         (void)still_thermal_init(&th, &tc);
         ticks_reset();
         for (i = 0; i < BENCH_N; i++) {
@@ -181,7 +181,7 @@ int main(void)
         for (i = 0; i < BENCH_N; i++) {
             (void)still_thermal_push(&th, in[i], &f);
         }
-        report("still_thermal_push(avg_n=256,span=30)", ticks(), t0);
+        report("still_thermal_push(avg_n=819,span=30)", ticks(), t0);
     }
     return 0;
 }
