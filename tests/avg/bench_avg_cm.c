@@ -41,7 +41,7 @@ static uint32_t ticks(void)
 }
 
 /* Baselines with the push functions' shapes. */
-__attribute__((noinline)) static int empty4(void *p, int32_t x, int32_t *y, bool *f)
+__attribute__((noinline)) static int empty4(const void *p, int32_t x, int32_t *y, bool *f)
 {
     __asm__ volatile("" ::: "memory");
     *y = x;
@@ -49,7 +49,7 @@ __attribute__((noinline)) static int empty4(void *p, int32_t x, int32_t *y, bool
     return 0;
 }
 
-__attribute__((noinline)) static int empty5(void *p, int32_t x, int32_t *y, bool *r, bool *f)
+__attribute__((noinline)) static int empty5(const void *p, int32_t x, int32_t *y, bool *r, bool *f)
 {
     __asm__ volatile("" ::: "memory");
     *y = x;
@@ -57,7 +57,7 @@ __attribute__((noinline)) static int empty5(void *p, int32_t x, int32_t *y, bool
     return 0;
 }
 
-__attribute__((noinline)) static int empty_still(void *p, const int32_t *g, const int32_t *a,
+__attribute__((noinline)) static int empty_still(const void *p, const int32_t *g, const int32_t *a,
                                                  bool *f)
 {
     __asm__ volatile("" ::: "memory");
@@ -65,7 +65,7 @@ __attribute__((noinline)) static int empty_still(void *p, const int32_t *g, cons
     return 0;
 }
 
-__attribute__((noinline)) static int empty_th(void *p, int32_t t, bool *f)
+__attribute__((noinline)) static int empty_th(const void *p, int32_t t, bool *f)
 {
     __asm__ volatile("" ::: "memory");
     *f = p != NULL && t != 0;

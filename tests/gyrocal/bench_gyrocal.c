@@ -198,7 +198,6 @@ int main(int argc, char **argv)
         struct sim_noise_cfg nc;
         struct sim_rng r;
         struct gyrocal_result res;
-        int rc;
         sim_noise_adis_cfg(&nc, seed + run);
         sim_rng_seed(&r, 0x5eed0000u + seed + run);
         for (i = 0; i < 3u; i++) {
@@ -210,7 +209,7 @@ int main(int argc, char **argv)
             return 2;
         }
         for (m = 0; m < 3u; m++) {
-            rc = gyrocal_run(&rig.gc, (enum gyrocal_mode)m, &res);
+            const int rc = gyrocal_run(&rig.gc, (enum gyrocal_mode)m, &res);
             if (rc != 0) {
                 failures++;
                 fprintf(stderr, "run %u %s: %s (%d)\n", run, mode_name[m],
