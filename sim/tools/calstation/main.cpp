@@ -9,11 +9,7 @@
 //   calstation compare [--cycles N] [--seeds S1,S2,...]   (part A plus seeded parts; default 2)
 //
 // Exit status: 0 success, 1 bad input (message on stderr, nothing written), 2 usage error.
-// error.h has no extern "C" guard of its own: give inc_err_name C linkage before any header
-// includes it.
-extern "C" {
 #include "inclino/error.h"
-}
 #include "inclino/calstation/compare.hpp"
 #include "inclino/calstation/fit.hpp"
 #include "inclino/calstation/record.hpp"

@@ -1,9 +1,5 @@
 // record.cpp - see record.hpp.
-// error.h has no extern "C" guard of its own: give inc_err_name C linkage before any header
-// includes it.
-extern "C" {
 #include "inclino/error.h"
-}
 #include "inclino/calstation/record.hpp"
 
 #include "inclino/cal.h"

@@ -12,6 +12,10 @@
 #ifndef INCLINO_ERROR_H
 #define INCLINO_ERROR_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 enum inc_err {
     INC_OK = 0,
     INC_ERR_NULL = -1,           /* a required pointer argument was NULL */
@@ -45,5 +49,9 @@ typedef enum inc_err inc_err_t;
 
 /* The enumerator's name without the INC_ prefix ("OK", "ERR_BUS", ...), or "ERR_UNKNOWN". */
 const char *inc_err_name(int err);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif /* INCLINO_ERROR_H */
