@@ -52,11 +52,30 @@ static fx_i128_t from_u(u128 m, bool neg) /* +-m, m <= 2^127 (2^127 only with ne
 static u128 mul_u64(uint64_t a, uint64_t b)
 {
     uint64_t a0 = (uint32_t)a, a1 = a >> 32, b0 = (uint32_t)b, b1 = b >> 32;
-    uint64_t p00 = a0 * b0, p01 = a0 * b1, p10 = a1 * b0, p11 = a1 * b1;
-    uint64_t mid = (p00 >> 32) + (uint32_t)p01 + (uint32_t)p10; /* < 3 * 2^32 */
+    uint64_t p00 = a0 * b0, mid;
     u128 r;
-    r.lo = (mid << 32) | (uint32_t)p00;
-    r.hi = p11 + (p01 >> 32) + (p10 >> 32) + (mid >> 32);
+    /* Operands that fit 32 bits (Q30 coefficients, small values) skip their partial products:
+     * each 32x32->64 product is a libgcc call on Cortex-M0+. The result is the same. */
+    if (a1 == 0u && b1 == 0u) {
+        r.lo = p00;
+        r.hi = 0u;
+        return r;
+    }
+    if (a1 == 0u || b1 == 0u) {
+        uint64_t x = a1 == 0u ? a0 : b0;         /* the 32-bit operand */
+        uint64_t y1 = a1 == 0u ? b1 : a1;        /* high word of the other */
+        uint64_t p1 = x * y1;
+        mid = (p00 >> 32) + (uint32_t)p1;       /* < 2^33 */
+        r.lo = (mid << 32) | (uint32_t)p00;
+        r.hi = (p1 >> 32) + (mid >> 32);
+        return r;
+    }
+    {
+        uint64_t p01 = a0 * b1, p10 = a1 * b0, p11 = a1 * b1;
+        mid = (p00 >> 32) + (uint32_t)p01 + (uint32_t)p10; /* < 3 * 2^32 */
+        r.lo = (mid << 32) | (uint32_t)p00;
+        r.hi = p11 + (p01 >> 32) + (p10 >> 32) + (mid >> 32);
+    }
     return r;
 }
 
@@ -197,13 +216,17 @@ int fx_i128_div_i64(fx_i128_t num, int64_t den, int64_t *quot)
          * quotient is < 2^64). rem starts as n >> steps, which is < d in both cases. */
         unsigned nb = 64u + bitlen64(n.hi), db = bitlen64(d);
         unsigned steps = nb - db + 1u, i;
+        uint64_t bits;
         if (steps > 64u) steps = 64u;
-        u128 top = shr_u(n, steps);
-        rem = top.lo;
+        rem = shr_u(n, steps).lo;
+        /* The bits still to bring down are the low `steps` bits of n (all in n.lo), left-aligned
+         * in `bits`: each step takes the top one with constant shifts (a variable 64-bit shift
+         * is a libgcc call on Cortex-M0+). */
+        bits = steps == 64u ? n.lo : n.lo << (64u - steps);
         q = 0u;
-        for (i = steps; i-- > 0u;) {
-            uint64_t bit = i >= 64u ? (n.hi >> (i - 64u)) & 1u : (n.lo >> i) & 1u;
-            rem = (rem << 1) | bit; /* < 2d <= 2^64 */
+        for (i = 0; i < steps; i++) {
+            rem = (rem << 1) | (bits >> 63); /* < 2d <= 2^64 */
+            bits <<= 1;
             q <<= 1;
             if (rem >= d) {
                 rem -= d;
