@@ -26,6 +26,15 @@
 
 /* ---- helpers ------------------------------------------------------------------------------ */
 
+/* Keeps a helper out of line so that its 128-bit temporaries live in its own short frame instead
+ * of adding to the caller's (gcc merges inlined frames; Cortex-M0+ images have 1 KiB of stack).
+ * Only an optimisation hint: without GCC-compatible attributes it expands to nothing. */
+#if defined(__GNUC__)
+#define KF_NOINLINE __attribute__((noinline))
+#else
+#define KF_NOINLINE
+#endif
+
 static int64_t clamp_p(int64_t v, bool *sat)
 {
     if (v > KF_P_MAX) {
@@ -52,10 +61,18 @@ static int64_t clamp_x(int64_t v, bool *sat)
     return v;
 }
 
-/* acc + c * v for a Q30 coefficient c; zero coefficients (sparse A, B, H) cost nothing. */
+/* acc + c * v for a Q30 coefficient c. Zero coefficients (sparse A, B, H) cost nothing and a
+ * coefficient of exactly 1 adds v * 2^30 without a multiply (the same exact value). */
 static inline fx_i128_t mac_q30(fx_i128_t acc, fx_q30_t c, int64_t v)
 {
-    return c == 0 ? acc : fx_i128_mac(acc, c, v);
+    if (c == 0) return acc;
+    if (c == FX_Q30_ONE) {
+        fx_i128_t t;
+        t.lo = (uint64_t)v << 30;                             /* two's complement bits */
+        t.hi = (uint64_t)(v < 0 ? -1 - ((-1 - v) >> 34) : v >> 34); /* floor(v / 2^34) */
+        return fx_i128_add(acc, t);
+    }
+    return fx_i128_mac(acc, c, v);
 }
 
 /* Checks a symmetric matrix s (n x n row-major, P format): diagonal in [0, KF_P_MAX],
@@ -131,10 +148,53 @@ int kf_meas_check(const struct kf_meas *ms, unsigned n)
 
 /* ---- equations (1) and (2) ---------------------------------------------------------------- */
 
+/* (1) x = A x + B u. B u is formed in the state's internal scale (u * 2^KF_X_FRAC). */
+KF_NOINLINE static void predict_x(struct kf *f, const struct kf_model *m, const int32_t *u,
+                                  bool *sat)
+{
+    int64_t xn[KF_N_MAX];
+    unsigned n = f->n, i, j;
+    for (i = 0; i < n; i++) {
+        fx_i128_t acc = fx_i128_from_i64(0);
+        for (j = 0; j < n; j++) acc = mac_q30(acc, m->a[i * n + j], f->x[j]);
+        for (j = 0; j < m->nu; j++) {
+            acc = mac_q30(acc, m->b[i * m->nu + j], (int64_t)u[j] * ((int64_t)1 << KF_X_FRAC));
+        }
+        xn[i] = clamp_x(fx_i128_rshift_round(acc, FX_Q30_SHIFT, sat), sat);
+    }
+    for (i = 0; i < n; i++) f->x[i] = xn[i];
+}
+
+/* (2) P = A P A' + Q: first AP (rounded once), then (AP) A' for the upper triangle. */
+KF_NOINLINE static void predict_p(struct kf *f, const struct kf_model *m, bool *sat)
+{
+    int64_t am[KF_N_MAX][KF_N_MAX];
+    unsigned n = f->n, i, j, k;
+    for (i = 0; i < n; i++) {
+        for (j = 0; j < n; j++) {
+            fx_i128_t acc = fx_i128_from_i64(0);
+            for (k = 0; k < n; k++) acc = mac_q30(acc, m->a[i * n + k], f->p[k][j]);
+            am[i][j] = fx_i128_rshift_round(acc, FX_Q30_SHIFT, sat);
+        }
+    }
+    for (i = 0; i < n; i++) {
+        for (j = i; j < n; j++) {
+            fx_i128_t acc = fx_i128_from_i64(0);
+            int64_t v;
+            for (k = 0; k < n; k++) acc = mac_q30(acc, m->a[j * n + k], am[i][k]);
+            v = fx_i128_rshift_round(acc, FX_Q30_SHIFT, sat);
+            /* Both terms are clamped to 2^60 first, so their sum cannot overflow int64. */
+            v = clamp_p(v, sat);
+            v = clamp_p(v + m->q[i * n + j], sat);
+            if (i == j && v < 0) v = 0;
+            f->p[i][j] = v;
+            f->p[j][i] = v;
+        }
+    }
+}
+
 int kf_predict(struct kf *f, const struct kf_model *m, const int32_t *u)
 {
-    int64_t xn[KF_N_MAX], am[KF_N_MAX][KF_N_MAX];
-    unsigned n, i, j, k;
     bool sat = false;
     int err;
 
@@ -143,41 +203,8 @@ int kf_predict(struct kf *f, const struct kf_model *m, const int32_t *u)
     err = kf_model_check(m, f->n);
     if (err != INC_OK) return err;
     if (m->nu > 0u && u == NULL) return INC_ERR_NULL;
-    n = f->n;
-
-    /* (1) x = A x + B u. B u is formed in the state's internal scale (u * 2^KF_X_FRAC). */
-    for (i = 0; i < n; i++) {
-        fx_i128_t acc = fx_i128_from_i64(0);
-        for (j = 0; j < n; j++) acc = mac_q30(acc, m->a[i * n + j], f->x[j]);
-        for (j = 0; j < m->nu; j++) {
-            acc = mac_q30(acc, m->b[i * m->nu + j], (int64_t)u[j] * ((int64_t)1 << KF_X_FRAC));
-        }
-        xn[i] = clamp_x(fx_i128_rshift_round(acc, FX_Q30_SHIFT, &sat), &sat);
-    }
-
-    /* (2) P = A P A' + Q: first AP (rounded once), then (AP) A' for the upper triangle. */
-    for (i = 0; i < n; i++) {
-        for (j = 0; j < n; j++) {
-            fx_i128_t acc = fx_i128_from_i64(0);
-            for (k = 0; k < n; k++) acc = mac_q30(acc, m->a[i * n + k], f->p[k][j]);
-            am[i][j] = fx_i128_rshift_round(acc, FX_Q30_SHIFT, &sat);
-        }
-    }
-    for (i = 0; i < n; i++) {
-        for (j = i; j < n; j++) {
-            fx_i128_t acc = fx_i128_from_i64(0);
-            int64_t v;
-            for (k = 0; k < n; k++) acc = mac_q30(acc, m->a[j * n + k], am[i][k]);
-            v = fx_i128_rshift_round(acc, FX_Q30_SHIFT, &sat);
-            /* Both terms are clamped to 2^60 first, so their sum cannot overflow int64. */
-            v = clamp_p(v, &sat);
-            v = clamp_p(v + m->q[i * n + j], &sat);
-            if (i == j && v < 0) v = 0;
-            f->p[i][j] = v;
-            f->p[j][i] = v;
-        }
-    }
-    for (i = 0; i < n; i++) f->x[i] = xn[i];
+    predict_x(f, m, u, &sat);
+    predict_p(f, m, &sat);
     if (sat) {
         f->overflow = true;
         return INC_ERR_OVERFLOW;
@@ -187,12 +214,45 @@ int kf_predict(struct kf *f, const struct kf_model *m, const int32_t *u)
 
 /* ---- equations (3), (4), (5) -------------------------------------------------------------- */
 
+/* h P h' and the innovation z - h x, in separate small frames (stack economy on Cortex-M0+). */
+KF_NOINLINE static int64_t row_dot_v(const fx_q30_t *h, const int64_t *v, unsigned n, bool *sat)
+{
+    fx_i128_t acc = fx_i128_from_i64(0);
+    unsigned i;
+    for (i = 0; i < n; i++) acc = mac_q30(acc, h[i], v[i]);
+    return fx_i128_rshift_round(acc, FX_Q30_SHIFT, sat);
+}
+
+/* k = v / s in Q30 (int64: |k| <= sqrt(P_ii / s) <= 2^30 for a valid P, i.e. 2^60 raw), then
+ * x += k y. Returns k. */
+KF_NOINLINE static int64_t gain_and_state(int64_t *x, int64_t v, int64_t s, int64_t y, bool *sat)
+{
+    int64_t k, dx;
+    if (fx_i128_div_i64(fx_i128_mul(v, (int64_t)1 << FX_Q30_SHIFT), s, &k) != INC_OK) *sat = true;
+    dx = fx_i128_rshift_round(fx_i128_mul(k, y), FX_Q30_SHIFT, sat);
+    *x = clamp_x(fx_i128_rshift_round(fx_i128_add(fx_i128_from_i64(*x), fx_i128_from_i64(dx)), 0u,
+                                      sat),
+                 sat);
+    return k;
+}
+
+/* P+_ij = P_ij - k_i v_j - v_i k_j + (s k_i) k_j, rounded once (Joseph form, see the top). */
+KF_NOINLINE static int64_t joseph(int64_t pij, int64_t ki, int64_t vi, int64_t kj, int64_t vj, int64_t wi,
+                      bool *sat)
+{
+    fx_i128_t t = fx_i128_mul(wi, kj);
+    t = fx_i128_sub(t, fx_i128_mul(ki, vj));
+    t = fx_i128_sub(t, fx_i128_mul(vi, kj));
+    t = fx_i128_add(fx_i128_from_i64(pij),
+                    fx_i128_from_i64(fx_i128_rshift_round(t, FX_Q30_SHIFT, sat)));
+    return clamp_p(fx_i128_rshift_round(t, 0u, sat), sat);
+}
+
 int kf_update_row(struct kf *f, const fx_q30_t *h, int64_t r, int32_t z)
 {
-    int64_t v[KF_N_MAX], k[KF_N_MAX], w[KF_N_MAX], hv, s, y;
+    int64_t v[KF_N_MAX], k[KF_N_MAX], s, y;
     unsigned n, i, j;
     bool sat = false;
-    fx_i128_t acc;
 
     if (f == NULL || h == NULL) return INC_ERR_NULL;
     if (f->n == 0u) return INC_ERR_STATE;
@@ -200,47 +260,21 @@ int kf_update_row(struct kf *f, const fx_q30_t *h, int64_t r, int32_t z)
     n = f->n;
 
     /* v = P h' and s = h P h' + r (the innovation variance, denominator of (4)). */
-    for (i = 0; i < n; i++) {
-        acc = fx_i128_from_i64(0);
-        for (j = 0; j < n; j++) acc = mac_q30(acc, h[j], f->p[i][j]);
-        v[i] = fx_i128_rshift_round(acc, FX_Q30_SHIFT, &sat);
-    }
-    acc = fx_i128_from_i64(0);
-    for (i = 0; i < n; i++) acc = mac_q30(acc, h[i], v[i]);
-    hv = clamp_p(fx_i128_rshift_round(acc, FX_Q30_SHIFT, &sat), &sat);
-    s = hv + r; /* |hv| <= 2^60, r <= 2^60 */
+    for (i = 0; i < n; i++) v[i] = row_dot_v(h, f->p[i], n, &sat);
+    s = clamp_p(row_dot_v(h, v, n, &sat), &sat) + r; /* |h P h'| <= 2^60, r <= 2^60 */
     if (s <= 0) return INC_ERR_DEGENERATE;
 
     /* Innovation of (3): z - H x, in the state's internal scale. */
-    acc = fx_i128_from_i64(0);
-    for (i = 0; i < n; i++) acc = mac_q30(acc, h[i], f->x[i]);
-    y = (int64_t)z * ((int64_t)1 << KF_X_FRAC) - fx_i128_rshift_round(acc, FX_Q30_SHIFT, &sat);
+    y = (int64_t)z * ((int64_t)1 << KF_X_FRAC) - row_dot_v(h, f->x, n, &sat);
 
-    /* (4) k = v / s in Q30 (int64: |k| <= sqrt(P_ii / s) <= 2^30 for a valid P, i.e. 2^60 raw). */
-    for (i = 0; i < n; i++) {
-        int err = fx_i128_div_i64(fx_i128_mul(v[i], (int64_t)1 << FX_Q30_SHIFT), s, &k[i]);
-        if (err != INC_OK) sat = true;
-        w[i] = fx_i128_rshift_round(fx_i128_mul(s, k[i]), FX_Q30_SHIFT, &sat); /* s k ~ v */
-    }
+    /* (4) k = v / s and (3) x += k y, state by state. */
+    for (i = 0; i < n; i++) k[i] = gain_and_state(&f->x[i], v[i], s, y, &sat);
 
-    /* (3) x += k y. */
+    /* (5) Joseph form, upper triangle, mirrored. */
     for (i = 0; i < n; i++) {
-        int64_t dx = fx_i128_rshift_round(fx_i128_mul(k[i], y), FX_Q30_SHIFT, &sat);
-        fx_i128_t xs = fx_i128_add(fx_i128_from_i64(f->x[i]), fx_i128_from_i64(dx));
-        f->x[i] = clamp_x(fx_i128_rshift_round(xs, 0u, &sat), &sat);
-    }
-
-    /* (5) Joseph form, upper triangle: P_ij - k_i v_j - v_i k_j + (s k_i) k_j. */
-    for (i = 0; i < n; i++) {
+        int64_t wi = fx_i128_rshift_round(fx_i128_mul(s, k[i]), FX_Q30_SHIFT, &sat); /* ~ v_i */
         for (j = i; j < n; j++) {
-            fx_i128_t t = fx_i128_mul(w[i], k[j]);
-            int64_t d, pij;
-            t = fx_i128_sub(t, fx_i128_mul(k[i], v[j]));
-            t = fx_i128_sub(t, fx_i128_mul(v[i], k[j]));
-            d = fx_i128_rshift_round(t, FX_Q30_SHIFT, &sat);
-            pij = fx_i128_rshift_round(fx_i128_add(fx_i128_from_i64(f->p[i][j]),
-                                                   fx_i128_from_i64(d)), 0u, &sat);
-            pij = clamp_p(pij, &sat);
+            int64_t pij = joseph(f->p[i][j], k[i], v[i], k[j], v[j], wi, &sat);
             if (i == j && pij < 0) pij = 0; /* -1 LSB of rounding, see the file comment */
             f->p[i][j] = pij;
             f->p[j][i] = pij;

@@ -54,7 +54,7 @@ extern "C" {
 /* Largest window k (samples incl. the current one). Each axis keeps k samples of history
  * (4 bytes each). Override at compile time for a different memory budget. */
 #ifndef KF_ADAPT_WIN_MAX
-#define KF_ADAPT_WIN_MAX 16u
+#define KF_ADAPT_WIN_MAX 32u
 #endif
 
 #define KF_ADAPT_AXES 6u /* gyro x, y, z, accel x, y, z (seed 004: in_wx .. in_az) */
