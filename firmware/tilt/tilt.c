@@ -26,6 +26,12 @@
 
 #define NS_PER_S 1000000000u
 
+#if defined(__GNUC__)
+#define TILT_NOINLINE __attribute__((noinline))
+#else
+#define TILT_NOINLINE
+#endif
+
 /* ---- accelerometer angles --------------------------------------------------------------- */
 
 void tilt_accel_angles(const fx_q16_t accel_g[3], fx_q16_t *roll_deg, fx_q16_t *pitch_deg)
@@ -217,6 +223,8 @@ int tilt_init(struct tilt *t, const struct tilt_config *cfg)
         }
     }
     t->last_ns = 0;
+    t->dt_ns_cached = 0;
+    t->dt_q30_cached = 0;
     tilt_restart(t);
     t->ready = true;
     return INC_OK;
@@ -295,14 +303,15 @@ static void clear_output(struct tilt_output *out)
     out->valid = false;
 }
 
-/* One axis, one step (the filter has started, 0 < dt <= dt_max). */
-static bool step_axis(struct tilt *t, unsigned i, fx_q16_t w, bool gyro_ok, bool acc_ok,
+/* One axis, one step (the filter has started, 0 < dt <= dt_max). Kept out of line so that its
+ * model arrays do not add to tilt_step's frame (see KF_NOINLINE in kf.c). */
+TILT_NOINLINE static bool step_axis(struct tilt *t, unsigned i, fx_q16_t w, bool gyro_ok, bool acc_ok,
                       fx_q16_t acc_angle, int64_t dtq)
 {
     const struct tilt_axis_config *c = &t->cfg.axis[i];
     struct tilt_axis_state *s = &t->ax[i];
     bool overflow = false;
-    int64_t q00 = per_step(c->q_angle, dtq);
+    int64_t q00 = s->q_angle_step;
     int err;
 
     if (!gyro_ok) {
@@ -328,7 +337,7 @@ static bool step_axis(struct tilt *t, unsigned i, fx_q16_t w, bool gyro_ok, bool
         q[0] = q00;
         q[1] = 0;
         q[2] = 0;
-        q[3] = per_step(c->q_bias, dtq);
+        q[3] = s->q_bias_step;
         m.n = 2;
         m.nu = 1;
         m.a = a;
@@ -427,7 +436,18 @@ int tilt_step(struct tilt *t, const struct tilt_input *in, uint32_t dt_ns, struc
         for (i = 0; i < TILT_AXES; i++) start_axis(t, i, acc_angle[i]);
         t->started = true;
     } else {
-        int64_t dtq = dt_q30(dt_ns);
+        int64_t dtq;
+        if (dt_ns != t->dt_ns_cached) {
+            /* A new interval (the first step, or a gap): convert it and the per-step noise once;
+             * at a steady rate this happens once. */
+            t->dt_ns_cached = dt_ns;
+            t->dt_q30_cached = dt_q30(dt_ns);
+            for (i = 0; i < TILT_AXES; i++) {
+                t->ax[i].q_angle_step = per_step(t->cfg.axis[i].q_angle, t->dt_q30_cached);
+                t->ax[i].q_bias_step = per_step(t->cfg.axis[i].q_bias, t->dt_q30_cached);
+            }
+        }
+        dtq = t->dt_q30_cached;
         for (i = 0; i < TILT_AXES; i++) {
             fx_q16_t w = in->gyro_dps[i];
             uint32_t sat_flag = i == TILT_ROLL ? TILT_IN_GYRO_SAT_X : TILT_IN_GYRO_SAT_Y;

@@ -124,12 +124,15 @@ struct tilt_output {
 struct tilt_axis_state {
     struct kf kf;   /* n = 1 (FEEDBACK, SEED_PRINTED) or 2 (KF2: angle, bias) */
     int64_t off;    /* FEEDBACK, SEED_PRINTED: gyro offset, deg/s * 2^32 */
+    int64_t q_angle_step, q_bias_step; /* q_angle dt, q_bias dt for dt_ns_cached (P format) */
 };
 
 struct tilt {
     struct tilt_config cfg;
     struct tilt_axis_state ax[TILT_AXES];
     uint64_t last_ns;   /* tilt_step_at: time of the previous sample */
+    int64_t dt_q30_cached; /* dt_ns_cached in seconds, Q30 (the conversion is a 64-bit division) */
+    uint32_t dt_ns_cached; /* 0: nothing cached */
     bool have_time;     /* tilt_step_at: last_ns is set */
     bool started;       /* an accepted accelerometer sample has started the angles */
     bool ready;         /* initialised */
