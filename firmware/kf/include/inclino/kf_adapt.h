@@ -32,10 +32,12 @@
  *   P               round((2^30 - K) P- / 2^30) (|error| <= 0.5 LSB).
  * RANGES: C in [1, KF_P_MAX] (C > 0 keeps P- + R > 0), D in [0, KF_P_MAX], A in
  *   [-KF_P_MAX, KF_P_MAX], any B, p0 in [0, KF_P_MAX], window k in 2..KF_ADAPT_WIN_MAX.
- *   P never exceeds max(p0, KF_P_MAX)... it is clamped to KF_P_MAX; since 0 <= K <= 1 it stays
- *   >= 0. Nothing can overflow: sums of the window are int64 (k * 2^31 < 2^36).
- * COST per sample: one 64/32 division (dz), one 128/64 division (K), three 128-bit products.
- * Instruction counts, flash and RAM: docs/benchmarks.md; tuning of C, D, A, B: docs/kalman.md.
+ *   Q, R and P- are clamped to KF_P_MAX; P stays in [0, KF_P_MAX] because 0 <= K <= 1. Nothing
+ *   can overflow: the window sum is int64 (k * 2^31 < 2^37), products are 128-bit.
+ * COST per sample: one 64/32 division (dz), one 128/64 division (K), six 128-bit products;
+ * RAM per axis sizeof(struct kf_adapt) (216 bytes on 32-bit targets with KF_ADAPT_WIN_MAX 32).
+ * Instruction counts, flash and RAM: docs/benchmarks.md; tuning of C, D, A, B: docs/kalman.md
+ * ("Tuning procedure").
  */
 #ifndef INCLINO_KF_ADAPT_H
 #define INCLINO_KF_ADAPT_H
