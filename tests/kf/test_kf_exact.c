@@ -11,6 +11,7 @@
  *     to the 2^-30 gain resolution.
  */
 #include <stdint.h>
+#include <math.h>
 #include <stdio.h>
 
 #include "inclino/kf.h"
@@ -322,8 +323,30 @@ static void test_adapt_bit_exact(void)
     printf("kf_adapt: %u steps bit-exact\n", steps);
 }
 
+/* kf_sigma: round(sqrt(P / 2^16)) through an integer square root of P and a rounding shift by 8:
+ * |error| <= 0.5 LSB + 2^-8 LSB (header) against the exact root, for P over its whole range. */
+static void test_sigma_bound(void)
+{
+    unsigned i;
+    double worst = 0;
+    for (i = 0; i < 200000; i++) {
+        struct kf f;
+        int64_t p = (int64_t)(rnd64() >> (4 + rnd64() % 60)); /* every magnitude up to 2^60 */
+        long double exact;
+        double err;
+        if (p > KF_P_MAX) p = KF_P_MAX;
+        REQUIRE(kf_init(&f, 1, NULL, &p) == INC_OK);
+        exact = sqrtl((long double)p / 65536.0L);
+        err = (double)fabsl((long double)kf_sigma(&f, 0) - exact);
+        if (err > worst) worst = err;
+    }
+    printf("kf_sigma: worst error %.6f LSB (bound 0.5 + 1/256)\n", worst);
+    CHECK(worst <= 0.5 + 1.0 / 256);
+}
+
 int main(void)
 {
+    UNIT_RUN(test_sigma_bound);
     UNIT_RUN(test_kf_bit_exact);
     UNIT_RUN(test_joseph_vs_exact);
     UNIT_RUN(test_adapt_bit_exact);
