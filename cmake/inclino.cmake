@@ -106,6 +106,13 @@ cmake_path(NORMAL_PATH INCLINO_ROOT)
 #  (tests/build) prove no soft-float helper is linked.
 set(INCLINO_FREESTANDING_OPTIONS -ffreestanding -fno-tree-loop-distribute-patterns
   -Wdouble-promotion -Wfloat-equal -Wcast-align -Wpointer-arith)
+# On Arm, -mgeneral-regs-only keeps gcc from using the FPU's registers at all: with the M4F's
+# hard-float ABI it otherwise moves 64-bit data (int64 covariances, struct copies) through
+# d-registers, which the no-float check rightly flags, and any float that slips into firmware
+# becomes a compile error.
+if(INCLINO_IS_ARM)
+  list(APPEND INCLINO_FREESTANDING_OPTIONS -mgeneral-regs-only)
+endif()
 
 function(inclino_add_subdirectories)
   file(GLOB children LIST_DIRECTORIES true CONFIGURE_DEPENDS RELATIVE "${CMAKE_CURRENT_SOURCE_DIR}"
