@@ -72,6 +72,7 @@ add_compile_options(-Wall -Wextra -Werror
   -Wshadow -Wvla -Wformat=2 -Wundef)
 
 if(INCLINO_SANITIZE)
+  add_compile_definitions(INCLINO_SANITIZE_BUILD=1) # tests/support/unit.h: UNIT_SANITIZED
   add_compile_options(-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer)
   add_link_options(-fsanitize=address,undefined -fno-sanitize-recover=all)
 endif()

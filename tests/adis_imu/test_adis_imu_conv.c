@@ -25,7 +25,7 @@ static bool rounds_exactly(int64_t q, int64_t num, int64_t den)
     return false;
 }
 
-#ifdef __arm__
+#if UNIT_REDUCED
 #define Q_STEP 61
 #else
 #define Q_STEP 1

@@ -5,7 +5,7 @@
  * noise law: on white noise the output rms is sigma * sqrt(sum h^2) (1/sqrt(N) for N-sample
  * averages) within 5 %.
  *
- * Runs on the host and under QEMU. Under __arm__ the long-noise runs use fewer samples (QEMU is
+ * Runs on the host and under QEMU. Where UNIT_REDUCED (QEMU, sanitizers) the long-noise runs use fewer samples (QEMU is
  * about 30 times slower); the tolerances stay the same (5 %), still 4.3 sigma of the estimate.
  */
 #include "inclino/avg.h"
@@ -16,7 +16,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#ifdef __arm__
+#if UNIT_REDUCED
 #define NOISE_K 2500u    /* independent outputs per rms estimate: rel. sd 1.4 % */
 #else
 #define NOISE_K 7200u    /* rel. sd 0.83 % */
@@ -459,7 +459,7 @@ static double gain2(uint32_t w, unsigned p)
 
 static void test_noise_law(void)
 {
-#ifdef __arm__
+#if UNIT_REDUCED
     const uint32_t ns[] = {4, 16, 64};
 #else
     const uint32_t ns[] = {4, 16, 64, 256, 1024};

@@ -13,24 +13,10 @@
 #include "unit.h"
 #include "cal_gen.h"
 
-#if defined(__arm__) || defined(__riscv)
-#define CALT_ON_TARGET 1
-#else
-#define CALT_ON_TARGET 0
-#endif
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_UNDEFINED__)
-#define CALT_SANITIZED 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(undefined_behavior_sanitizer)
-#define CALT_SANITIZED 1
-#endif
-#endif
-#ifndef CALT_SANITIZED
-#define CALT_SANITIZED 0
-#endif
 /* CALT_DENSITY(full, reduced): the dense sweep on the host, a reduced one under QEMU (soft
- * float) and under ASan/UBSan, whose job is undefined behaviour on the same code paths. */
-#define CALT_DENSITY(full, reduced) ((CALT_ON_TARGET || CALT_SANITIZED) ? (reduced) : (full))
+ * float) and under ASan/UBSan (unit.h's UNIT_SIZE). */
+#define CALT_ON_TARGET UNIT_ON_TARGET
+#define CALT_DENSITY(full, reduced) UNIT_SIZE(full, reduced)
 
 #define CALT_Q16 65536.0
 #define CALT_Q30 1073741824.0

@@ -170,6 +170,18 @@ static void test_compare_goal()
     // Seed 002 reproduced: part A and a seeded part B, fitted from their own data.
     std::vector<CompareAxis> rows;
     CompareConfig cfg;
+    if (UNIT_SANITIZED) {
+        // The sanitizer build runs the same code paths on one chamber cycle of part A (the
+        // figures below need the full ten cycles; the host build asserts them).
+        cfg.cycles = 1;
+        cfg.validation_cycles = 1;
+        REQUIRE(compare_part(SimPart{true, 0}, cfg, rows).empty());
+        REQUIRE(rows.size() == 3);
+        for (const auto &r : rows) {
+            CHECK(r.bias[0].in_sample > 13.0 && r.bias[0].in_sample < 15.0);
+        }
+        return;
+    }
     REQUIRE(compare_part(SimPart{true, 0}, cfg, rows).empty());
     REQUIRE(compare_part(SimPart{false, 2}, cfg, rows).empty());
     std::fputs(format_compare(rows).c_str(), stdout);

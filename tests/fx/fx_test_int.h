@@ -18,23 +18,10 @@
  * host-sanitize build (ASan + UBSan are ~5x slower; its job is finding undefined behaviour on
  * the same code paths, the bounds are proven by the dense host run).
  * FX_DENSITY(full, reduced) picks one; docs/fixed-point.md lists both per test. */
-#if defined(__arm__) || defined(__riscv)
-#define FX_TEST_ON_TARGET 1
-#else
-#define FX_TEST_ON_TARGET 0
-#endif
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_UNDEFINED__)
-#define FX_TEST_SANITIZED 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(undefined_behavior_sanitizer)
-#define FX_TEST_SANITIZED 1
-#endif
-#endif
-#ifndef FX_TEST_SANITIZED
-#define FX_TEST_SANITIZED 0
-#endif
-#define FX_TEST_REDUCED (FX_TEST_ON_TARGET || FX_TEST_SANITIZED)
-#define FX_DENSITY(full, reduced) (FX_TEST_REDUCED ? (reduced) : (full))
+#define FX_TEST_ON_TARGET UNIT_ON_TARGET
+#define FX_TEST_SANITIZED UNIT_SANITIZED
+#define FX_TEST_REDUCED UNIT_REDUCED
+#define FX_DENSITY(full, reduced) UNIT_SIZE(full, reduced)
 
 /* xorshift32: the same sequence on every target. */
 static inline uint32_t fxt_rand(uint32_t *state)

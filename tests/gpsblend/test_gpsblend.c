@@ -6,7 +6,7 @@
 #include <math.h>
 #include <stdio.h>
 
-#ifdef __arm__
+#if UNIT_REDUCED
 #define SWEEP 300
 #else
 #define SWEEP 30000

@@ -16,7 +16,7 @@
 
 /* Samples per statistics check: fewer under QEMU (soft-float doubles on Cortex-M3 are slow);
  * the tolerances below scale with the count (6 sigma of the estimate), so both stay tight. */
-#ifdef __arm__
+#if UNIT_REDUCED
 #define STAT_N 10000
 #else
 #define STAT_N 40000

@@ -9,7 +9,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#ifdef __arm__
+#if UNIT_REDUCED
 #define SWEEP 400   /* QEMU: soft-float references are slow */
 #else
 #define SWEEP 20000

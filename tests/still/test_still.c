@@ -5,7 +5,7 @@
  * data (white noise of the seed-003 density, 0.05 deg/s and 1 mg per LSB): at rest -> AT_REST
  * with no false alarm, vibration / rotation / tilt -> MOVING; a warming part -> settled only once
  * the temperature stops moving.
- * Host and QEMU (fewer simulated windows under __arm__).
+ * Host and QEMU (fewer simulated windows where UNIT_REDUCED: QEMU, sanitizers).
  */
 #include "inclino/still.h"
 #include "inclino/sim/inertial.h"
@@ -16,7 +16,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#ifdef __arm__
+#if UNIT_REDUCED
 #define SIM_WINDOWS 12u
 #else
 #define SIM_WINDOWS 120u

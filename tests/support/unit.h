@@ -20,6 +20,26 @@
 extern "C" {
 #endif
 
+/*
+ * Where instructions are expensive - under QEMU (Arm, RISC-V: emulated, soft-float libm) and in
+ * the sanitizer build (ASan + UBSan, several times slower; its job is undefined behaviour on the
+ * same code paths) - long sweeps and simulations run a reduced size: UNIT_SIZE(full, reduced).
+ * The plain host build always runs the full size, so every stated bound is proven there at full
+ * density; each test says where it uses the reduced size.
+ */
+#if defined(__arm__) || defined(__riscv)
+#define UNIT_ON_TARGET 1
+#else
+#define UNIT_ON_TARGET 0
+#endif
+#if defined(INCLINO_SANITIZE_BUILD) || defined(__SANITIZE_ADDRESS__)
+#define UNIT_SANITIZED 1
+#else
+#define UNIT_SANITIZED 0
+#endif
+#define UNIT_REDUCED (UNIT_ON_TARGET || UNIT_SANITIZED)
+#define UNIT_SIZE(full, reduced) (UNIT_REDUCED ? (reduced) : (full))
+
 extern unsigned unit_checks;
 extern unsigned unit_failures;
 

@@ -13,7 +13,7 @@
 #include "inclino/tilt.h"
 #include "unit.h"
 
-#if defined(__arm__) || defined(__riscv)
+#if UNIT_REDUCED
 #define ON_TARGET 1
 #else
 #define ON_TARGET 0
