@@ -1,20 +1,237 @@
 /*
- * app.h - the EPB application: what the firmware image runs on top of the HAL.
+ * app.h - the EPB application (module inclino_app, prefix app_): what runs on the ECU.
  *
- * For now only the start-up contract: the image's main() brings up its HAL port and hands the
- * struct hal over; the EPB pipeline (sensors, calibration, averaging, tilt) grows here.
+ * Pipeline, per sample of the sensor adapter (inclino/app_sensor.h):
+ *   nominal-scaled sample -> calibration of the record loaded from calstore (cal_acc_apply with
+ *   the temperature models evaluated at the sample's temperature, cal_gyro_apply) -> stillness
+ *   detection (inclino/still.h) -> block average of avg_n samples;
+ * and per block: the slope estimate (inclino/slope.h) in degrees and percent grade with its
+ * validity flag and the error bound of seed 000's budget, composed from
+ *   - the calibration residuals of the part type (struct app_budget, set by the integrator from
+ *     the end-of-line process; docs/epb-demo.md shows how the demo derives them),
+ *   - the temperature term that applies: compensated only when the record has a temperature
+ *     model covering the present temperature and the part reports one,
+ *   - the noise: the larger of the rated per-sample rms and the rms measured in the stillness
+ *     windows of the block (engine vibration included), with N = the samples averaged and the
+ *     factor k from the lifetime exceedance rule E = M * r (slope_sigma_factor).
+ * The calibration record is bound to the sensor: a missing, corrupt, unsupported or foreign
+ * record (calstore_load != 0) leaves the application running UNCALIBRATED: the samples pass
+ * through, every estimate carries SLOPE_F_NOT_CALIBRATED and APP_F_NOT_CALIBRATED and is never
+ * valid, and the budget switches to the uncalibrated terms.
+ *
+ * End of line (on-device steps; the station's host-side fits are not here): average a still
+ * face (app_eol_face), offset and gain from the six faces (cal_six_position) and the gyro offset
+ * from the same still intervals (app_eol_six_position), and store the record bound to the
+ * sensor through calstore (app_eol_save). A "power cycle" is a fresh app_init.
+ *
+ * Units: Q16.16 g, deg/s, degC, deg, % (inclino/fx.h); ratios Q30. Freestanding C11, integer
+ * only, no heap; struct app is caller-allocated (docs/benchmarks.md, "EPB demo", gives its
+ * size). Not re-entrant per instance.
  */
 #ifndef INCLINO_APP_H
 #define INCLINO_APP_H
 
-#include "inclino/hal.h"
+#include <stdbool.h>
+#include <stdint.h>
+
+#include "inclino/app_sensor.h"
+#include "inclino/cal.h"
+#include "inclino/calrec.h"
+#include "inclino/calstore.h"
+#include "inclino/error.h"
+#include "inclino/fx.h"
+#include "inclino/slope.h"
+#include "inclino/still.h"
 
 #ifdef __cplusplus
 extern "C" {
 #endif
 
-/* Validate the HAL and start the application. Returns 0 or INC_ERR_NULL (hal incomplete). */
-int app_init(const struct hal *hal);
+/*
+ * Error budget of the part type (seed 000 Table 1), per axis, worst case, Q16 g unless noted.
+ * Every term >= 0. The "after calibration" terms apply when the record is valid; the "_uncal"
+ * terms (seed 000 "before") replace sensitivity and offset when it is not.
+ */
+struct app_budget {
+    fx_q30_t sensitivity;       /* relative gain residual after calibration (Q30, < 0.5) */
+    fx_q16_t offset_g;          /* offset residual after calibration */
+    fx_q16_t nonlinearity_g;    /* nonlinearity the record leaves within +-max_slope_deg */
+    fx_q16_t temp_comp_g;       /* offset drift left by the record's temperature model, inside
+                                   the range the model was calibrated over */
+    fx_q16_t temp_uncomp_g;     /* offset drift without compensation: no model, no temperature
+                                   output, or the temperature outside the calibrated range */
+    fx_q30_t tscale_uncomp;     /* relative scale-factor drift without compensation (same
+                                   cases, from the record's scale models); added to the
+                                   sensitivity term (Q30, < 0.5) */
+    fx_q30_t sensitivity_uncal; /* uncalibrated part: sensitivity error (Q30, < 0.5) */
+    fx_q16_t offset_uncal_g;    /* uncalibrated part: initial offset */
+    fx_q16_t noise_sigma_g;     /* rated rms noise of ONE output sample */
+    uint32_t lifetime_runs;     /* M: slope measurements over the vehicle's life, >= 1 */
+    fx_q16_t exceed_expected;   /* E: expected runs beyond k sigma over that life (Q16, > 0);
+                                   E / M <= 2^-4 (slope_sigma_factor) */
+};
+
+struct app_cfg {
+    uint32_t avg_n;             /* samples per estimate, a multiple of still.window, >= 1 */
+    struct still_cfg still;     /* in the sample units: Q16 deg/s and Q16 g */
+    struct slope_cfg slope;     /* method, axes, limits; its budget is composed per estimate
+                                   (the one given here is ignored) */
+    struct app_budget budget;
+    fx_q16_t temp_default_c;    /* temperature assumed for a part without temperature output */
+    fx_q16_t temp_step_c;       /* re-evaluate the temperature models when the temperature moved
+                                   this much since the last evaluation (> 0, e.g. 0.5 degC) */
+    uint32_t max_sensor_errors; /* read errors tolerated per block; more: APP_F_SENSOR */
+};
+
+/* Why an application result is not valid, besides the slope flags (app_result.flags). */
+#define APP_F_NOT_CALIBRATED 0x01u /* no valid calibration record for this sensor */
+#define APP_F_TEMP_UNCOMP 0x02u    /* temperature drift not compensated (not an error by
+                                      itself: the budget took temp_uncomp_g) */
+#define APP_F_SENSOR 0x04u         /* more read errors in the block than max_sensor_errors */
+#define APP_F_SATURATED 0x08u      /* a sample of the block was at the end of its range */
+#define APP_F_NOT_STILL 0x10u      /* a stillness window of the block was not quiet, or the
+                                      detector was not at rest at its end */
+
+/* One estimate (one block of avg_n samples). */
+struct app_result {
+    bool valid;                /* slope.valid, and neither APP_F_SENSOR nor APP_F_SATURATED */
+    uint32_t flags;            /* APP_F_* */
+    struct slope_result slope; /* estimate, bound, SLOPE_F_* flags */
+    struct slope_budget budget;/* the budget the bound was computed with */
+    fx_q16_t accel_g[3];       /* calibrated mean acceleration */
+    fx_q16_t gyro_dps[3];      /* calibrated mean rate */
+    fx_q16_t temp_c;           /* mean temperature (the default when the part has none) */
+    fx_q16_t sigma_meas_g;     /* rms per sample measured on the slope axes (largest window) */
+    uint32_t n;                /* samples averaged */
+    uint32_t missed;           /* part samples lost (missed data-ready) during the block */
+    uint32_t sensor_errors;    /* failed reads during the block */
+    uint32_t motion_windows;   /* stillness windows of the block that were not quiet */
+    uint8_t still_state;       /* enum still_state at the end of the block */
+    int cal_status;            /* calstore_load's status at app_init (0: calibrated) */
+};
+
+/* A calibrated sample, as app_step passes it on (e.g. to the tilt filter). */
+struct app_corrected {
+    fx_q16_t accel_g[3];
+    fx_q16_t gyro_dps[3];
+    fx_q16_t temp_c;
+    uint32_t flags;            /* APP_S_* of the sample */
+};
+
+struct app {
+    struct app_cfg cfg;
+    struct app_sensor sensor;
+    struct calrec_binding id;  /* the sensor's identity, read at init */
+    struct calrec rec;         /* the record in use (safe default when uncalibrated) */
+    struct cal_acc acc;
+    struct cal_gyro gyro;
+    struct still still;
+    fx_q16_t k_sigma;          /* noise factor from the lifetime exceedance rule */
+    int cal_status;            /* calstore_load status */
+    bool temp_set;             /* the models were evaluated at least once */
+    fx_q16_t temp_applied;     /* temperature of that evaluation */
+    /* the block in progress */
+    struct fx_sum sum_a[3], sum_g[3], sum_t;
+    uint32_t n, missed, errors, motion_start, flags;
+    uint64_t var_max;          /* largest window variance on the slope axes, Q16 g^2 */
+    bool ready;
+};
+
+/*
+ * A starting configuration for a part sampling at rate_mhz (milli-samples/s, 10 000 .. 10^7):
+ *   stillness windows of W = round(rate * 5 / 16 s) samples (0.31 s; 256 at 819.2 SPS), at rest
+ *   after 2 quiet windows; limits: accel sd 30 mg (engine idle passes, driving does not), gyro
+ *   sd 0.5 deg/s, |gyro mean| 1 deg/s, | |a| - 1 g | 50 mg, window-to-window drift 15 mg;
+ *   blocks of avg_n = 8 W samples (2.5 s);
+ *   two-axis slope (x along the vehicle, nose up = +x; z up), |slope| <= 30 deg, bound <= 2 deg,
+ *   magnitude 1 g +- 50 mg;
+ *   seed 000's Table 1 as the budget: after calibration sensitivity 0, offset 0, nonlinearity
+ *   10 mg, temperature 10 mg (three-point) or 50 mg (none), scale drift 0.5 %; before it 3 % and
+ *   15 mg; noise 4 mg per sample (seed 000: 0.4 mg after averaging 100); k from M = 200 000
+ *   parkings and E = 0.001 (k = 5.9);
+ *   temperature 25 degC when the part has none, models re-evaluated every 0.5 degC, no read
+ *   error tolerated in a block.
+ * An integrator replaces the budget with the residuals its end-of-line process achieves.
+ * 0, INC_ERR_NULL, INC_ERR_INVAL (rate).
+ */
+int app_cfg_default(struct app_cfg *cfg, uint32_t rate_mhz);
+
+/*
+ * Check cfg: avg_n >= 1 and a multiple of still.window, still_init's and slope_cfg_check's
+ * rules (with the composed budget), budget terms >= 0, temp_step_c > 0. 0, INC_ERR_NULL,
+ * INC_ERR_INVAL.
+ */
+int app_cfg_check(const struct app_cfg *cfg);
+
+/*
+ * Start the application: read the sensor's identity, load its calibration from store (NULL:
+ * none), bind the correction to it. Returns 0 when the application runs, calibrated or not
+ * (a->cal_status tells: 0, or calstore_load's code; INC_ERR_NOT_CALIBRATED without a store);
+ * INC_ERR_NULL / INC_ERR_INVAL (cfg, sensor ops) or the identity read's error (a is then not
+ * ready and every call returns INC_ERR_STATE).
+ */
+int app_init(struct app *a, const struct app_cfg *cfg, const struct app_sensor *sensor,
+             struct calstore *store);
+
+/* True when a valid record is applied (at the last evaluated temperature). */
+bool app_calibrated(const struct app *a);
+
+/*
+ * Feed one sample (from the adapter, or from a replay). It is calibrated (out, may be NULL),
+ * pushed to the stillness detector and into the block. When it completes a block, *done is true
+ * and *res holds the estimate; the next block starts. read_err != 0 counts a failed read instead
+ * (s is not used, may be NULL). INC_ERR_NULL, INC_ERR_STATE.
+ */
+int app_step(struct app *a, const struct app_sample *s, int read_err, struct app_corrected *out,
+             bool *done, struct app_result *res);
+
+/*
+ * Read samples from the sensor until one block is complete and return its estimate in *res.
+ * Read errors are counted (APP_F_SENSOR beyond max_sensor_errors); after 4 * avg_n reads without
+ * a complete block the last read error is returned. 0, INC_ERR_NULL, INC_ERR_STATE, or that
+ * error.
+ */
+int app_measure(struct app *a, struct app_result *res);
+
+/* Drop the block in progress and restart the stillness windows (e.g. after the vehicle moved). */
+void app_restart(struct app *a);
+
+/* ---- End of line ------------------------------------------------------------------------- */
+
+/* A still face: raw (uncalibrated, nominal-scaled) means, exact to 0.5 LSB. */
+struct app_face {
+    fx_q16_t accel_g[3];
+    fx_q16_t gyro_dps[3];      /* 0 for a part without gyro */
+    fx_q16_t temp_c;           /* 0 for a part without temperature */
+    uint32_t n;                /* samples averaged */
+    uint32_t flags;            /* APP_S_HAVE_GYRO / APP_S_HAVE_TEMP as the part has them */
+};
+
+/*
+ * Average n (1..2^31) samples of a face held still. Every read must succeed; any axis whose
+ * span (max - min) exceeds max_span_g (accelerometer) or max_span_dps (gyro) makes it
+ * INC_ERR_MOTION (the part moved). INC_ERR_NULL, INC_ERR_STATE, INC_ERR_INVAL (n == 0), a read
+ * error. *out written only on success.
+ */
+int app_eol_face(struct app *a, uint32_t n, fx_q16_t max_span_g, fx_q16_t max_span_dps,
+                 struct app_face *out);
+
+/*
+ * On-device offset and gain: cal_six_position on the faces' accelerometer means (enum cal_face
+ * order) into rec->acc_offset / acc_gain, and the gyro offset = the mean of the six faces' gyro
+ * means (rounded, |error| <= 0.5 LSB) into rec->gyro_offset when the part has a gyro. Other
+ * fields of rec are left as they are. INC_ERR_NULL; cal_six_position's errors; INC_ERR_RANGE
+ * for a gyro offset beyond 30 deg/s. rec untouched on error.
+ */
+int app_eol_six_position(const struct app_face face[CAL_FACES], struct calrec *rec);
+
+/*
+ * Bind rec to the sensor (its identity read at app_init) and store it as the newest record
+ * (calstore_save). The running instance keeps its current calibration; the record is used after
+ * the next app_init. INC_ERR_NULL, INC_ERR_STATE, calstore_save's errors.
+ */
+int app_eol_save(struct app *a, struct calrec *rec, struct calstore *store,
+                 struct calstore_info *info);
 
 #ifdef __cplusplus
 }

@@ -1,0 +1,122 @@
+/*
+ * app_eol.c - the on-device end-of-line steps of the EPB application (see app.h).
+ *
+ * The faces are averaged from the RAW samples (nominal-scaled, no calibration applied, whatever
+ * record is loaded): the calibration is being made from them. Seed 000's flip gives offset and
+ * gain per axis (cal_six_position, which also checks that each face is the one claimed); the
+ * gyro offset comes from the same still intervals (seed 003: zero rotation, thermally settled),
+ * as the mean of the six faces' means so that gravity's small effect on a gyro (g-sensitivity)
+ * averages out over opposite faces.
+ */
+#include "inclino/app.h"
+
+#include <stddef.h>
+
+int app_eol_face(struct app *a, uint32_t n, fx_q16_t max_span_g, fx_q16_t max_span_dps,
+                 struct app_face *out)
+{
+    struct cal_avg acc, gyro;
+    struct fx_sum temp;
+    uint32_t k, flags = APP_S_HAVE_GYRO | APP_S_HAVE_TEMP;
+    struct app_face f;
+    int err;
+    if (a == NULL || out == NULL) {
+        return INC_ERR_NULL;
+    }
+    if (!a->ready) {
+        return INC_ERR_STATE;
+    }
+    if (n == 0u || n > FX_SUM_MAX_COUNT) {
+        return INC_ERR_INVAL;
+    }
+    cal_avg_reset(&acc);
+    cal_avg_reset(&gyro);
+    fx_sum_reset(&temp);
+    for (k = 0; k < n; k++) {
+        struct app_sample s;
+        err = a->sensor.ops->read(a->sensor.ctx, &s);
+        if (err != INC_OK) {
+            return err;
+        }
+        flags &= s.flags;
+        (void)cal_avg_add(&acc, s.accel_g);
+        (void)cal_avg_add(&gyro, s.gyro_dps);
+        (void)fx_sum_add(&temp, s.temp_c);
+    }
+    err = cal_avg_mean(&acc, max_span_g, f.accel_g);
+    if (err != INC_OK) {
+        return err;
+    }
+    if ((flags & APP_S_HAVE_GYRO) != 0u) {
+        err = cal_avg_mean(&gyro, max_span_dps, f.gyro_dps);
+        if (err != INC_OK) {
+            return err;
+        }
+    } else {
+        f.gyro_dps[0] = f.gyro_dps[1] = f.gyro_dps[2] = 0;
+    }
+    f.temp_c = 0;
+    if ((flags & APP_S_HAVE_TEMP) != 0u) {
+        (void)fx_sum_mean(&temp, &f.temp_c);
+    }
+    f.n = n;
+    f.flags = flags & (APP_S_HAVE_GYRO | APP_S_HAVE_TEMP);
+    *out = f;
+    return INC_OK;
+}
+
+int app_eol_six_position(const struct app_face face[CAL_FACES], struct calrec *rec)
+{
+    fx_q16_t means[CAL_FACES][3], off[3], goff[3] = {0, 0, 0};
+    fx_q30_t gain[3];
+    bool gyro = true;
+    unsigned f, i;
+    int err;
+    if (face == NULL || rec == NULL) {
+        return INC_ERR_NULL;
+    }
+    for (f = 0; f < CAL_FACES; f++) {
+        for (i = 0; i < 3u; i++) {
+            means[f][i] = face[f].accel_g[i];
+        }
+        gyro = gyro && (face[f].flags & APP_S_HAVE_GYRO) != 0u;
+    }
+    err = cal_six_position((const fx_q16_t(*)[3])means, off, gain);
+    if (err != INC_OK) {
+        return err;
+    }
+    if (gyro) {
+        for (i = 0; i < 3u; i++) {
+            struct fx_sum s;
+            fx_sum_reset(&s);
+            for (f = 0; f < CAL_FACES; f++) {
+                (void)fx_sum_add(&s, face[f].gyro_dps[i]);
+            }
+            (void)fx_sum_mean(&s, &goff[i]);
+            if (fx_abs(goff[i]) > CAL_GYRO_OFFSET_MAX) {
+                return INC_ERR_RANGE;
+            }
+        }
+    }
+    for (i = 0; i < 3u; i++) {
+        rec->acc_offset[i] = off[i];
+        rec->acc_gain[i] = gain[i];
+        if (gyro) {
+            rec->gyro_offset[i] = goff[i];
+        }
+    }
+    return INC_OK;
+}
+
+int app_eol_save(struct app *a, struct calrec *rec, struct calstore *store,
+                 struct calstore_info *info)
+{
+    if (a == NULL || rec == NULL || store == NULL) {
+        return INC_ERR_NULL;
+    }
+    if (!a->ready) {
+        return INC_ERR_STATE;
+    }
+    rec->binding = a->id;
+    return calstore_save(store, rec, info);
+}

@@ -1,0 +1,180 @@
+/*
+ * epb_image.c - the EPB application as the firmware image runs it (see epb_image.h).
+ *
+ * Sensor: an ADIS1640x on the bit-banged SPI engine, data-ready on DIO1, the part's own filter
+ * off (SENS_AVG M = 0, +-300 deg/s): the application averages, and white samples keep the noise
+ * term of the bound right (docs/epb-demo.md). Calibration: calstore over the MCU's flash.
+ *
+ * Two seams stay placeholders until a board port exists, like the GPIO seam of the Cortex-M
+ * HAL port (README, "Porting to a new MCU"): the pin numbers below and the flash driver
+ * (epb_flash_none: every access fails with INC_ERR_IO, so the application runs uncalibrated and
+ * says so). The results go to epb_output, where the vehicle-network layer will pick them up;
+ * the end-of-line steps are run on request through epb_diag (set by the diagnostic layer).
+ */
+#include "epb_image.h"
+
+#include <stddef.h>
+
+#include "inclino/adis_imu.h"
+#include "inclino/app.h"
+#include "inclino/calstore.h"
+#include "inclino/spi_bitbang.h"
+
+/* Pin numbers of the board (placeholders; the MCU family port numbers its pins). */
+#define EPB_PIN_SCLK 0u
+#define EPB_PIN_MOSI 1u
+#define EPB_PIN_MISO 2u
+#define EPB_PIN_CS 3u
+#define EPB_PIN_DR 4u
+
+/* Calibration flash: two slots of one 1 KiB page each, programmed in 8-byte units (typical MCU
+ * data-flash geometry; placeholders until the board port gives the real ones). */
+#define EPB_FLASH_PAGE 1024u
+#define EPB_FLASH_PROG 8u
+#define EPB_FLASH_SLOT0 0u
+#define EPB_FLASH_SLOT1 1024u
+
+/* Retry period after a failed sensor bring-up, ms. */
+#define EPB_RETRY_MS 100u
+
+static int flash_none_read(void *ctx, uint32_t addr, uint8_t *buf, uint32_t len)
+{
+    (void)ctx;
+    (void)addr;
+    (void)buf;
+    (void)len;
+    return INC_ERR_IO;
+}
+
+static int flash_none_program(void *ctx, uint32_t addr, const uint8_t *buf, uint32_t len)
+{
+    (void)ctx;
+    (void)addr;
+    (void)buf;
+    (void)len;
+    return INC_ERR_IO;
+}
+
+static int flash_none_erase(void *ctx, uint32_t addr)
+{
+    (void)ctx;
+    (void)addr;
+    return INC_ERR_IO;
+}
+
+static const struct calstore_flash_ops epb_flash_none = {flash_none_read, flash_none_program,
+                                                          flash_none_erase};
+
+/* Diagnostic requests (end of line). */
+enum epb_diag_cmd {
+    EPB_DIAG_NONE = 0,
+    EPB_DIAG_FACE = 1,   /* average face `face` (enum cal_face) for `n` samples */
+    EPB_DIAG_SAVE = 2,   /* six-position offset/gain from the six faces, store the record */
+};
+
+struct epb_diag {
+    uint32_t cmd;        /* enum epb_diag_cmd; cleared when done */
+    uint32_t face;
+    uint32_t n;
+    int32_t status;      /* result of the last request */
+};
+
+volatile struct epb_diag epb_diag;
+volatile struct app_result epb_output;
+volatile uint32_t epb_output_count;
+
+static struct spi_bitbang spi;
+static struct adis_imu imu;
+static struct app_adis adapter;
+static struct app_sensor sensor;
+static struct calstore store;
+static struct app app;
+static struct app_face faces[CAL_FACES];
+static struct calrec rec;
+
+static int sensor_up(const struct hal *hal)
+{
+    static const struct spi_bitbang_cfg sc = {NULL, EPB_PIN_SCLK, EPB_PIN_MOSI, EPB_PIN_MISO};
+    struct spi_bitbang_cfg c = sc;
+    struct adis_imu_cfg ic;
+    int err;
+    c.hal = hal;
+    err = spi_bitbang_init(&spi, &c);
+    if (err != INC_OK) {
+        return err;
+    }
+    ic.hal = hal;
+    ic.bus = &spi.bus;
+    ic.cs = EPB_PIN_CS;
+    ic.variant = (uint8_t)ADIS_IMU_ANY;
+    ic.dr_pin = EPB_PIN_DR;
+    ic.dr_line = (uint8_t)ADIS_IMU_DR_DIO1;
+    ic.dr_active_low = false;
+    ic.reset_at_init = false;
+    ic.self_test_at_init = true;
+    err = adis_imu_init(&imu, &ic);
+    if (err == INC_OK) {
+        err = adis_imu_set_filter(&imu, 0u, ADIS_IMU_RANGE_300);
+    }
+    if (err == INC_OK) {
+        err = app_adis_sensor(&adapter, &imu, &sensor);
+    }
+    return err;
+}
+
+static void diag_serve(void)
+{
+    const uint32_t cmd = epb_diag.cmd;
+    int err = INC_ERR_INVAL;
+    if (cmd == EPB_DIAG_FACE && epb_diag.face < CAL_FACES) {
+        /* A face must hold still: 50 mg / 2 deg/s span at most. */
+        err = app_eol_face(&app, epb_diag.n, 3277, FX_Q16_INT(2), &faces[epb_diag.face]);
+    } else if (cmd == EPB_DIAG_SAVE) {
+        calrec_set_default(&rec);
+        err = app_eol_six_position(faces, &rec);
+        if (err == INC_OK) {
+            err = app_eol_save(&app, &rec, &store, NULL);
+        }
+    }
+    epb_diag.status = err;
+    epb_diag.cmd = EPB_DIAG_NONE;
+}
+
+void epb_image_run(const struct hal *hal)
+{
+    static const struct calstore_config fc = {&epb_flash_none, NULL, EPB_FLASH_PAGE, EPB_FLASH_PROG,
+                                              CALSTORE_ERASED, {EPB_FLASH_SLOT0, EPB_FLASH_SLOT1},
+                                              EPB_FLASH_PAGE};
+    struct app_cfg cfg;
+    /* Seed 000's budget and the default stillness thresholds at the ADIS default 819.2 SPS. */
+    (void)app_cfg_default(&cfg, adis_imu_sample_rate_msps(ADIS_IMU_SMPL_PRD_DEFAULT));
+    for (;;) {
+        struct app_result r;
+        unsigned i;
+        if (sensor_up(hal) != INC_OK || calstore_init(&store, &fc) != INC_OK ||
+            app_init(&app, &cfg, &sensor, &store) != INC_OK) {
+            hal_delay_ms(hal, EPB_RETRY_MS);
+            continue;
+        }
+        while (app_measure(&app, &r) == INC_OK) {
+            /* Field by field: the output is volatile (read by another layer). */
+            epb_output.valid = r.valid;
+            epb_output.flags = r.flags;
+            epb_output.slope.slope_deg = r.slope.slope_deg;
+            epb_output.slope.grade_pct = r.slope.grade_pct;
+            epb_output.slope.bound_deg = r.slope.bound_deg;
+            epb_output.slope.bound_pct = r.slope.bound_pct;
+            epb_output.slope.flags = r.slope.flags;
+            epb_output.slope.valid = r.slope.valid;
+            for (i = 0; i < 3u; i++) {
+                epb_output.accel_g[i] = r.accel_g[i];
+            }
+            epb_output.temp_c = r.temp_c;
+            epb_output_count = epb_output_count + 1u;
+            if (epb_diag.cmd != EPB_DIAG_NONE) {
+                diag_serve();
+                app_restart(&app);
+            }
+        }
+    }
+}
