@@ -1,0 +1,182 @@
+/*
+ * sim/epb_rig.h - the EPB demo's rig (module inclino_epb_rig, prefix epb_rig_): one simulated
+ * board with one inertial part (ADIS1636x/1640x or SCA3000 pin-level model) carrying the errors
+ * calibration removes (sim/calpart.h), an emulated NOR flash for the calibration store, the real
+ * drivers, the sensor adapter and the EPB application (inclino/app.h) on top, and the physics
+ * the part feels:
+ *
+ *   STATION  the end-of-line station: the part lies on one of its six faces (enum cal_face) in a
+ *            chamber at a set temperature (the soak itself is not simulated in time: the chamber
+ *            is taken as settled).
+ *   VEHICLE  the part in a parked car (x forward, y left, z up): slope (nose up positive) and
+ *            cross slope, engine idling, small random bumps (passengers, doors), optionally the
+ *            car driving off. The model is documented in docs/epb-demo.md ("Vibration model"):
+ *              engine   sinusoids at engine orders 0.5, 1, 2, 4 of the idle speed (750 rpm: 2nd
+ *                       order 25 Hz dominant for a four-cylinder), amplitudes in g per axis and a
+ *                       small angular rate, phases drawn from the seed;
+ *              bumps    Poisson arrivals; each a damped body-bounce oscillation (1.4 Hz, zeta
+ *                       0.3) in z and in pitch (the true attitude rocks, the gyro sees the rate);
+ *              driving  from drive_off_s: a longitudinal acceleration ramp, squat, road noise.
+ *
+ * Plain C (sim/ rules): also builds for the QEMU tests; doubles are simulation only.
+ * Deterministic for a given seed.
+ */
+#ifndef INCLINO_SIM_EPB_RIG_H
+#define INCLINO_SIM_EPB_RIG_H
+
+#include <stdbool.h>
+#include <stdint.h>
+
+#include "inclino/adis_imu.h"
+#include "inclino/app.h"
+#include "inclino/calstore.h"
+#include "inclino/sca3000.h"
+#include "inclino/sim/adis_imu.h"
+#include "inclino/sim/board.h"
+#include "inclino/sim/calpart.h"
+#include "inclino/sim/sca3000.h"
+#include "inclino/simflash.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+enum epb_rig_part {
+    EPB_RIG_ADIS16405 = 0,
+    EPB_RIG_ADIS16400,
+    EPB_RIG_ADIS16364,
+    EPB_RIG_ADIS16362,
+    EPB_RIG_SCA3000_D01,
+    EPB_RIG_SCA3000_E02,
+    EPB_RIG_PARTS
+};
+
+struct epb_rig_part_info {
+    const char *name;        /* "adis16405", "sca3000-d01", ... (command-line name) */
+    bool adis;               /* ADIS1636x/1640x (else SCA3000) */
+    int sim_variant;         /* enum sim_adis_imu_variant or enum sim_sca3000_variant */
+    double acc_lsb_g;        /* accelerometer output LSB, g */
+    double gyro_lsb_dps;     /* gyro LSB (+-300 deg/s range), deg/s; 0 without gyro */
+    double temp_lsb_c;       /* temperature LSB, degC; 0 without temperature output */
+    double rate_sps;         /* output rate the firmware runs the part at */
+    double range_g;          /* accelerometer output range (saturation), g */
+};
+
+/* The table entry of a part (NULL when out of range) and the part of a command-line name. */
+const struct epb_rig_part_info *epb_rig_part_info(enum epb_rig_part p);
+int epb_rig_part_from_name(const char *name, enum epb_rig_part *out);
+
+enum epb_rig_mode { EPB_RIG_STATION = 0, EPB_RIG_VEHICLE = 1 };
+
+#define EPB_RIG_ORDERS 4      /* engine orders modelled */
+#define EPB_RIG_BUMPS 16      /* bumps ringing at once (the oldest is dropped) */
+
+struct epb_rig_order {
+    double order;            /* multiple of the crank frequency */
+    double amp_g[3];         /* x y z, g */
+    double amp_dps[3];       /* angular vibration, deg/s */
+};
+
+struct epb_rig_vehicle {
+    double slope_deg;        /* nose up positive (10 % grade = 5.71 deg) */
+    double roll_deg;         /* cross slope, left side up positive */
+    double temp_c;           /* die temperature */
+    double idle_rpm;         /* 0: engine off */
+    struct epb_rig_order orders[EPB_RIG_ORDERS];
+    double bump_rate_hz;     /* mean bumps per second (0: none) */
+    double bump_amp_g;       /* largest bump, z, g */
+    double bump_pitch_deg;   /* largest bump, pitch, deg */
+    double bump_freq_hz;     /* body bounce frequency */
+    double bump_zeta;        /* its damping ratio */
+    double drive_off_s;      /* < 0: parked for good; else the car drives off at this time */
+    double drive_accel_g;    /* longitudinal acceleration reached 1 s after drive-off */
+    double drive_squat_deg;  /* pitch change while accelerating */
+    double road_noise_g;     /* rms road vibration while driving (z; x, y at 40 %) */
+};
+
+/* The default parked car: 10 % grade, 25 degC, engine idling at 750 rpm (four-cylinder orders
+ * 0.5/1/2/4), bumps 0.3 per s of at most 8 mg and 0.02 deg, parked for good. */
+void epb_rig_vehicle_default(struct epb_rig_vehicle *v);
+
+struct epb_rig_bump {
+    double t0;               /* start, s (scenario time) */
+    double amp_g, pitch_deg;
+};
+
+struct epb_rig {
+    enum epb_rig_part part;
+    const struct epb_rig_part_info *info;
+    struct sim_board board;
+    struct sim_adis_imu adis;
+    struct sim_sca3000 sca;
+    struct sim_calpart errors;
+    struct sim_error_model em;
+    struct sim_physics phys;
+    struct simflash flash;
+    uint8_t flash_mem[2048];
+    /* physics */
+    enum epb_rig_mode mode;
+    int face;                /* enum cal_face (station) */
+    double station_temp_c;
+    struct epb_rig_vehicle veh;
+    uint64_t t0_ns;          /* start of the vehicle scenario */
+    double phase[EPB_RIG_ORDERS][3];
+    struct sim_rng rng;      /* bumps and road noise */
+    double next_bump_s;
+    struct epb_rig_bump bumps[EPB_RIG_BUMPS];
+    unsigned bump_count, bump_total;
+    double last_pitch_deg;   /* true pitch of the last physics sample (base + rocking) */
+    /* firmware side (re-created at every power-up) */
+    struct adis_imu imu;
+    struct sca3000 sca_dev;
+    struct app_adis ad_adis;
+    struct app_sca3000 ad_sca;
+    struct app_sensor sensor;
+    struct calstore store;
+    struct app app;
+};
+
+/*
+ * Set up board, part model (errors: NULL = sim_calpart_paper(), seed 000/002's part "A"),
+ * flash (erased) and the station physics (face ZP, 25 degC). The part is powered and past its
+ * start-up time. 0 or an error of the parts.
+ */
+int epb_rig_init(struct epb_rig *r, enum epb_rig_part part, const struct sim_calpart_params *errors,
+                 uint64_t seed);
+
+/*
+ * Power the MCU up (again): fresh driver, adapter, calibration store over the same flash and
+ * application instance (app_init with cfg: the record is loaded here). For the ADIS parts the
+ * driver runs the part at 819.2 SPS with its own filter off (SENS_AVG M = 0, +-300 deg/s).
+ * Returns 0 or the first error (driver init, app_init).
+ */
+int epb_rig_power_up(struct epb_rig *r, const struct app_cfg *cfg);
+
+/* The firmware's sample rate for this part, milli-samples/s (for app_cfg_default). */
+uint32_t epb_rig_rate_mhz(const struct epb_rig *r);
+
+/* Station physics: the part on `face` (enum cal_face) at temp_c. */
+void epb_rig_station(struct epb_rig *r, int face, double temp_c);
+
+/* Vehicle physics from now on (scenario time 0 = now). */
+void epb_rig_vehicle(struct epb_rig *r, const struct epb_rig_vehicle *v);
+
+/* Let virtual time pass (the part keeps sampling). */
+void epb_rig_wait(struct epb_rig *r, double seconds);
+
+/* Scenario time of the vehicle (s since epb_rig_vehicle), and virtual time (s). */
+double epb_rig_scenario_s(const struct epb_rig *r);
+double epb_rig_now_s(const struct epb_rig *r);
+
+/* Timing/protocol violations seen by the part (sim_violation_log total). */
+unsigned epb_rig_violations(const struct epb_rig *r);
+
+/* The true specific force and rate at scenario time t (what the physics hook gives the part
+ * before its errors). */
+void epb_rig_truth(struct epb_rig *r, double t_s, double accel_g[3], double rate_dps[3]);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* INCLINO_SIM_EPB_RIG_H */
