@@ -89,6 +89,7 @@ int app_cfg_default(struct app_cfg *c, uint32_t rate_mhz)
     c->budget.exceed_expected = 66;                  /* 0.001 in Q16 */
     c->temp_default_c = FX_Q16_INT(25);
     c->temp_step_c = FX_Q16_HALF;
+    c->temp_margin_c = FX_Q16_ONE;
     c->max_sensor_errors = 0u;
     return INC_OK;
 }
@@ -102,7 +103,7 @@ int app_cfg_check(const struct app_cfg *cfg)
     }
     if (cfg->avg_n == 0u || cfg->still.window < STILL_WINDOW_MIN ||
         cfg->still.window > STILL_WINDOW_MAX || cfg->avg_n % cfg->still.window != 0u ||
-        cfg->temp_step_c <= 0 || !budget_ok(&cfg->budget)) {
+        cfg->temp_step_c <= 0 || cfg->temp_margin_c < 0 || !budget_ok(&cfg->budget)) {
         return INC_ERR_INVAL;
     }
     if (slope_sigma_factor(cfg->budget.lifetime_runs, cfg->budget.exceed_expected, &k) != INC_OK) {
@@ -195,9 +196,10 @@ void app_restart(struct app *a)
 
 /* ---- Budget composition ----------------------------------------------------------------------- */
 
-/* True when model m was calibrated over a range that holds t (degC Q16). LORENTZ states no
- * range and is bounded by itself (between p0 and p0 + p1, calrec.h): it counts as covering. */
-static bool tmodel_covers(const struct calrec_tmodel *m, fx_q16_t t)
+/* True when model m was calibrated over a range that holds t (degC Q16) within margin. LORENTZ
+ * states no range and is bounded by itself (between p0 and p0 + p1, calrec.h): it counts as
+ * covering. */
+static bool tmodel_covers(const struct calrec_tmodel *m, fx_q16_t t, fx_q16_t margin)
 {
     int64_t lo, hi;
     switch (m->kind) {
@@ -216,7 +218,7 @@ static bool tmodel_covers(const struct calrec_tmodel *m, fx_q16_t t)
     default:
         return false;
     }
-    return (int64_t)t >= lo && (int64_t)t <= hi;
+    return (int64_t)t >= lo - margin && (int64_t)t <= hi + margin;
 }
 
 /* ceil(sqrt(var * W / (W - 1))) in Q16 g from a window variance in Q16 g^2 (rounded down by
@@ -261,11 +263,13 @@ static void finish_block(struct app *a, struct app_result *res)
     res->cal_status = a->cal_status;
 
     if (cal && t_have) {
-        off_comp = tmodel_covers(&a->rec.acc_tbias[sc.slope_axis], t_mean);
-        scale_comp = tmodel_covers(&a->rec.acc_tscale[sc.slope_axis], t_mean);
+        const struct calrec *rc = &a->rec;
+        const fx_q16_t mg = a->cfg.temp_margin_c;
+        off_comp = tmodel_covers(&rc->acc_tbias[sc.slope_axis], t_mean, mg);
+        scale_comp = tmodel_covers(&rc->acc_tscale[sc.slope_axis], t_mean, mg);
         if (sc.method == SLOPE_TWO_AXIS) {
-            off_comp = off_comp && tmodel_covers(&a->rec.acc_tbias[sc.gravity_axis], t_mean);
-            scale_comp = scale_comp && tmodel_covers(&a->rec.acc_tscale[sc.gravity_axis], t_mean);
+            off_comp = off_comp && tmodel_covers(&rc->acc_tbias[sc.gravity_axis], t_mean, mg);
+            scale_comp = scale_comp && tmodel_covers(&rc->acc_tscale[sc.gravity_axis], t_mean, mg);
         }
     }
     sc.budget.sensitivity = cal ? b->sensitivity : b->sensitivity_uncal;

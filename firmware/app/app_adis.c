@@ -1,11 +1,11 @@
 /*
- * app_adis.c - sensor adapter for the ADIS1636x/1640x driver (see app_sensor.h).
+ * app_adis.c - sensor adapter for the ADIS1636x/1640x driver (see app_adis.h).
  *
  * One sample = one data-ready edge + one burst read (sensors.md 3.1: the burst returns every
  * output of one sample set in one CS period, so the axes are coherent). Conversions are the
  * driver's (adis_imu_to_phys), exact to 0.5 LSB Q16.
  */
-#include "inclino/app_sensor.h"
+#include "inclino/app_adis.h"
 
 #include <stddef.h>
 

@@ -1,5 +1,5 @@
 /*
- * app_sca3000.c - sensor adapter for the SCA3000 driver (see app_sensor.h).
+ * app_sca3000.c - sensor adapter for the SCA3000 driver (see app_sca3000.h).
  *
  * No source describes a new-data interrupt for direct measurement mode (sensors.md 1.6), so
  * the output data rate paces the reads: a read waits until one output period after the
@@ -7,7 +7,7 @@
  * set: the driver reads them in one burst). Being late by whole periods is reported as missed
  * samples; a sample lost within one period cannot be seen without a data-ready line.
  */
-#include "inclino/app_sensor.h"
+#include "inclino/app_sca3000.h"
 
 #include <stddef.h>
 
@@ -27,7 +27,9 @@ static int sca_read(void *ctx, struct app_sample *out)
     unsigned i;
     int err;
     if (!ad->started) {
-        ad->next_ns = now;
+        /* The first read waits one period: the part may still hold a sample from before the
+         * adapter started (its registers keep the last one), which would not belong here. */
+        ad->next_ns = now + ad->period_ns;
         ad->started = true;
     }
     if (now < ad->next_ns) {

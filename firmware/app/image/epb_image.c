@@ -17,6 +17,7 @@
 
 #include "inclino/adis_imu.h"
 #include "inclino/app.h"
+#include "inclino/app_adis.h"
 #include "inclino/calstore.h"
 #include "inclino/spi_bitbang.h"
 

@@ -1,5 +1,5 @@
 /* epb_rig.c - see sim/epb_rig.h and docs/epb-demo.md. */
-#include "inclino/sim/epb_rig.h"
+#include "inclino/sim/epb_rig_state.h"
 
 #include <math.h>
 #include <stddef.h>
@@ -22,7 +22,7 @@ static const struct epb_rig_part_info parts[EPB_RIG_PARTS] = {
     {"sca3000-e02", false, SIM_SCA3000_E02, 0.001, 0.0, 0.0, 125.0, 4.0},
 };
 
-const struct epb_rig_part_info *epb_rig_part_info(enum epb_rig_part p)
+const struct epb_rig_part_info *epb_rig_part_get(enum epb_rig_part p)
 {
     return (unsigned)p < (unsigned)EPB_RIG_PARTS ? &parts[p] : NULL;
 }
@@ -205,12 +205,12 @@ int epb_rig_init(struct epb_rig *r, enum epb_rig_part part, const struct sim_cal
     if (r == NULL) {
         return INC_ERR_NULL;
     }
-    if (epb_rig_part_info(part) == NULL) {
+    if (epb_rig_part_get(part) == NULL) {
         return INC_ERR_INVAL;
     }
     memset(r, 0, sizeof(*r));
     r->part = part;
-    r->info = epb_rig_part_info(part);
+    r->info = epb_rig_part_get(part);
     if (errors != NULL) {
         p = *errors;
     } else {
@@ -357,7 +357,7 @@ void epb_rig_station(struct epb_rig *r, int face, double temp_c)
     r->station_temp_c = temp_c;
 }
 
-void epb_rig_vehicle(struct epb_rig *r, const struct epb_rig_vehicle *v)
+void epb_rig_park(struct epb_rig *r, const struct epb_rig_vehicle *v)
 {
     unsigned k, i;
     r->veh = *v;
@@ -394,4 +394,52 @@ double epb_rig_now_s(const struct epb_rig *r)
 unsigned epb_rig_violations(const struct epb_rig *r)
 {
     return r->board.log.total;
+}
+
+struct epb_rig *epb_rig_instance(void)
+{
+    static struct epb_rig rig;
+    return &rig;
+}
+
+const struct epb_rig_part_info *epb_rig_info(const struct epb_rig *r)
+{
+    return r->info;
+}
+
+struct app *epb_rig_app(struct epb_rig *r)
+{
+    return &r->app;
+}
+
+const struct app_sensor *epb_rig_sensor(const struct epb_rig *r)
+{
+    return &r->sensor;
+}
+
+struct calstore *epb_rig_store(struct epb_rig *r)
+{
+    return &r->store;
+}
+
+struct sim_pinbus *epb_rig_pinbus(struct epb_rig *r)
+{
+    return &r->board.bus;
+}
+
+void epb_rig_print_violations(const struct epb_rig *r, FILE *out)
+{
+    if (r->board.log.total != 0u) {
+        sim_violation_log_print(&r->board.log, out);
+    }
+}
+
+unsigned epb_rig_bump_count(const struct epb_rig *r)
+{
+    return r->bump_total;
+}
+
+int epb_rig_vcd_open(struct epb_rig *r, struct sim_vcd *v, const char *path)
+{
+    return sim_vcd_open(v, path, &r->board.bus, SIM_BOARD_SPI_MASK | SIM_PIN_MASK(SIM_BOARD_DR(0)));
 }

@@ -80,6 +80,10 @@ struct app_cfg {
     fx_q16_t temp_default_c;    /* temperature assumed for a part without temperature output */
     fx_q16_t temp_step_c;       /* re-evaluate the temperature models when the temperature moved
                                    this much since the last evaluation (> 0, e.g. 0.5 degC) */
+    fx_q16_t temp_margin_c;     /* a model still counts as covering a temperature this far outside
+                                   its calibrated range (>= 0; the models hold their end values
+                                   there, and temp_comp_g must be characterised over the range
+                                   widened by it) */
     uint32_t max_sensor_errors; /* read errors tolerated per block; more: APP_F_SENSOR */
 };
 
@@ -149,8 +153,8 @@ struct app {
  *   10 mg, temperature 10 mg (three-point) or 50 mg (none), scale drift 0.5 %; before it 3 % and
  *   15 mg; noise 4 mg per sample (seed 000: 0.4 mg after averaging 100); k from M = 200 000
  *   parkings and E = 0.001 (k = 5.9);
- *   temperature 25 degC when the part has none, models re-evaluated every 0.5 degC, no read
- *   error tolerated in a block.
+ *   temperature 25 degC when the part has none, models re-evaluated every 0.5 degC, a margin of
+ *   1 degC around the calibrated temperature range, no read error tolerated in a block.
  * An integrator replaces the budget with the residuals its end-of-line process achieves.
  * 0, INC_ERR_NULL, INC_ERR_INVAL (rate).
  */
@@ -158,7 +162,7 @@ int app_cfg_default(struct app_cfg *cfg, uint32_t rate_mhz);
 
 /*
  * Check cfg: avg_n >= 1 and a multiple of still.window, still_init's and slope_cfg_check's
- * rules (with the composed budget), budget terms >= 0, temp_step_c > 0. 0, INC_ERR_NULL,
+ * rules (with the composed budget), budget terms >= 0, temp_step_c > 0, temp_margin_c >= 0. 0, INC_ERR_NULL,
  * INC_ERR_INVAL.
  */
 int app_cfg_check(const struct app_cfg *cfg);

@@ -27,15 +27,13 @@
 #include <stdbool.h>
 #include <stdint.h>
 
-#include "inclino/adis_imu.h"
+#include <stdio.h>
+
 #include "inclino/app.h"
 #include "inclino/calstore.h"
-#include "inclino/sca3000.h"
-#include "inclino/sim/adis_imu.h"
-#include "inclino/sim/board.h"
 #include "inclino/sim/calpart.h"
-#include "inclino/sim/sca3000.h"
-#include "inclino/simflash.h"
+#include "inclino/sim/pinbus.h"
+#include "inclino/sim/vcd.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -63,7 +61,7 @@ struct epb_rig_part_info {
 };
 
 /* The table entry of a part (NULL when out of range) and the part of a command-line name. */
-const struct epb_rig_part_info *epb_rig_part_info(enum epb_rig_part p);
+const struct epb_rig_part_info *epb_rig_part_get(enum epb_rig_part p);
 int epb_rig_part_from_name(const char *name, enum epb_rig_part *out);
 
 enum epb_rig_mode { EPB_RIG_STATION = 0, EPB_RIG_VEHICLE = 1 };
@@ -98,43 +96,9 @@ struct epb_rig_vehicle {
  * 0.5/1/2/4), bumps 0.3 per s of at most 8 mg and 0.02 deg, parked for good. */
 void epb_rig_vehicle_default(struct epb_rig_vehicle *v);
 
-struct epb_rig_bump {
-    double t0;               /* start, s (scenario time) */
-    double amp_g, pitch_deg;
-};
-
-struct epb_rig {
-    enum epb_rig_part part;
-    const struct epb_rig_part_info *info;
-    struct sim_board board;
-    struct sim_adis_imu adis;
-    struct sim_sca3000 sca;
-    struct sim_calpart errors;
-    struct sim_error_model em;
-    struct sim_physics phys;
-    struct simflash flash;
-    uint8_t flash_mem[2048];
-    /* physics */
-    enum epb_rig_mode mode;
-    int face;                /* enum cal_face (station) */
-    double station_temp_c;
-    struct epb_rig_vehicle veh;
-    uint64_t t0_ns;          /* start of the vehicle scenario */
-    double phase[EPB_RIG_ORDERS][3];
-    struct sim_rng rng;      /* bumps and road noise */
-    double next_bump_s;
-    struct epb_rig_bump bumps[EPB_RIG_BUMPS];
-    unsigned bump_count, bump_total;
-    double last_pitch_deg;   /* true pitch of the last physics sample (base + rocking) */
-    /* firmware side (re-created at every power-up) */
-    struct adis_imu imu;
-    struct sca3000 sca_dev;
-    struct app_adis ad_adis;
-    struct app_sca3000 ad_sca;
-    struct app_sensor sensor;
-    struct calstore store;
-    struct app app;
-};
+/* The rig's state; its definition is in inclino/sim/epb_rig_state.h (C only: the drivers'
+ * headers do not compile as C++ under -Wshadow). C++ code uses epb_rig_instance(). */
+struct epb_rig;
 
 /*
  * Set up board, part model (errors: NULL = sim_calpart_paper(), seed 000/002's part "A"),
@@ -158,8 +122,8 @@ uint32_t epb_rig_rate_mhz(const struct epb_rig *r);
 /* Station physics: the part on `face` (enum cal_face) at temp_c. */
 void epb_rig_station(struct epb_rig *r, int face, double temp_c);
 
-/* Vehicle physics from now on (scenario time 0 = now). */
-void epb_rig_vehicle(struct epb_rig *r, const struct epb_rig_vehicle *v);
+/* Vehicle physics from now on (scenario time 0 = now): the car parks (or drives, see v). */
+void epb_rig_park(struct epb_rig *r, const struct epb_rig_vehicle *v);
 
 /* Let virtual time pass (the part keeps sampling). */
 void epb_rig_wait(struct epb_rig *r, double seconds);
@@ -170,6 +134,22 @@ double epb_rig_now_s(const struct epb_rig *r);
 
 /* Timing/protocol violations seen by the part (sim_violation_log total). */
 unsigned epb_rig_violations(const struct epb_rig *r);
+
+/* The process's rig (static storage: no heap), for callers that cannot allocate the struct. */
+struct epb_rig *epb_rig_instance(void);
+
+/* Parts of the rig. */
+const struct epb_rig_part_info *epb_rig_info(const struct epb_rig *r);
+struct app *epb_rig_app(struct epb_rig *r);
+const struct app_sensor *epb_rig_sensor(const struct epb_rig *r);
+struct calstore *epb_rig_store(struct epb_rig *r);
+struct sim_pinbus *epb_rig_pinbus(struct epb_rig *r);
+/* Start a VCD of the SPI pins and the part's data-ready line (sim_vcd_open). */
+int epb_rig_vcd_open(struct epb_rig *r, struct sim_vcd *v, const char *path);
+/* Print the violation log (when there is any violation). */
+void epb_rig_print_violations(const struct epb_rig *r, FILE *out);
+/* Bumps begun since epb_rig_park. */
+unsigned epb_rig_bump_count(const struct epb_rig *r);
 
 /* The true specific force and rate at scenario time t (what the physics hook gives the part
  * before its errors). */

@@ -1,0 +1,56 @@
+/*
+ * sim/epb_rig_state.h - the state of the EPB demo's rig (see sim/epb_rig.h). C only: it holds
+ * the drivers' and models' structs by value (caller-allocated, no heap).
+ */
+#ifndef INCLINO_SIM_EPB_RIG_STATE_H
+#define INCLINO_SIM_EPB_RIG_STATE_H
+
+#include "inclino/adis_imu.h"
+#include "inclino/app_adis.h"
+#include "inclino/app_sca3000.h"
+#include "inclino/sca3000.h"
+#include "inclino/sim/adis_imu.h"
+#include "inclino/sim/board.h"
+#include "inclino/sim/epb_rig.h"
+#include "inclino/sim/sca3000.h"
+#include "inclino/simflash.h"
+
+struct epb_rig_bump {
+    double t0;               /* start, s (scenario time) */
+    double amp_g, pitch_deg;
+};
+
+struct epb_rig {
+    enum epb_rig_part part;
+    const struct epb_rig_part_info *info;
+    struct sim_board board;
+    struct sim_adis_imu adis;
+    struct sim_sca3000 sca;
+    struct sim_calpart errors;
+    struct sim_error_model em;
+    struct sim_physics phys;
+    struct simflash flash;
+    uint8_t flash_mem[2048];
+    /* physics */
+    enum epb_rig_mode mode;
+    int face;                /* enum cal_face (station) */
+    double station_temp_c;
+    struct epb_rig_vehicle veh;
+    uint64_t t0_ns;          /* start of the vehicle scenario */
+    double phase[EPB_RIG_ORDERS][3];
+    struct sim_rng rng;      /* bumps and road noise */
+    double next_bump_s;
+    struct epb_rig_bump bumps[EPB_RIG_BUMPS];
+    unsigned bump_count, bump_total;
+    double last_pitch_deg;   /* true pitch of the last physics sample (base + rocking) */
+    /* firmware side (re-created at every power-up) */
+    struct adis_imu imu;
+    struct sca3000 sca_dev;
+    struct app_adis ad_adis;
+    struct app_sca3000 ad_sca;
+    struct app_sensor sensor;
+    struct calstore store;
+    struct app app;
+};
+
+#endif /* INCLINO_SIM_EPB_RIG_STATE_H */
