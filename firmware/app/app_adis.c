@@ -3,7 +3,7 @@
  *
  * One sample = one data-ready edge + one burst read (sensors.md 3.1: the burst returns every
  * output of one sample set in one CS period, so the axes are coherent). Conversions are the
- * driver's (adis_imu_to_phys), exact to 0.5 LSB Q16.
+ * driver's, exact to 0.5 LSB Q16.
  */
 #include "inclino/app_adis.h"
 
@@ -22,7 +22,6 @@ static int adis_read(void *ctx, struct app_sample *out)
 {
     struct app_adis *ad = ctx;
     struct adis_imu_sample s;
-    struct adis_imu_phys p;
     uint32_t missed = 0, more = 0;
     unsigned i;
     int err = adis_imu_wait_dr(ad->imu, 0u, &missed);
@@ -39,17 +38,16 @@ static int adis_read(void *ctx, struct app_sample *out)
             }
         }
     }
-    if (err == INC_OK) {
-        err = adis_imu_to_phys(ad->imu, &s, &p);
-    }
     if (err != INC_OK) {
         return err;
     }
     ad->reads++;
+    /* A burst that returned 0 has every channel valid; the driver's conversions (as
+     * adis_imu_to_phys, without its whole-sample struct on the stack). */
     out->flags = APP_S_HAVE_GYRO | APP_S_HAVE_TEMP;
     for (i = 0; i < 3u; i++) {
-        out->accel_g[i] = p.accel_g[i];
-        out->gyro_dps[i] = p.gyro_dps[i];
+        out->accel_g[i] = adis_imu_accel_g_q16(s.counts[ADIS_IMU_CH_ACCEL_X + i], ad->imu->info->accel_lsb_ug);
+        out->gyro_dps[i] = adis_imu_gyro_dps_q16(s.counts[ADIS_IMU_CH_GYRO_X + i], (enum adis_imu_range)s.gyro_range);
         if (at_end(s.counts[ADIS_IMU_CH_ACCEL_X + i])) {
             out->flags |= APP_S_ACCEL_SAT;
         }
@@ -58,13 +56,13 @@ static int adis_read(void *ctx, struct app_sample *out)
         }
     }
     if (ad->imu->info->family == (uint8_t)ADIS_IMU_FAMILY_1640X) {
-        out->temp_c = p.temp_c[0];
+        out->temp_c = adis_imu_temp_c_q16(s.counts[ADIS_IMU_CH_TEMP0], ADIS_IMU_FAMILY_1640X);
     } else {
         /* Three gyro temperatures on the 1636x: their mean, rounded (ties away from zero). */
         struct fx_sum t;
         fx_sum_reset(&t);
         for (i = 0; i < 3u; i++) {
-            (void)fx_sum_add(&t, p.temp_c[i]);
+            (void)fx_sum_add(&t, adis_imu_temp_c_q16(s.counts[ADIS_IMU_CH_TEMP0 + i], ADIS_IMU_FAMILY_1636X));
         }
         (void)fx_sum_mean(&t, &out->temp_c);
     }

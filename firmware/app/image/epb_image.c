@@ -146,11 +146,12 @@ void epb_image_run(const struct hal *hal)
     static const struct calstore_config fc = {&epb_flash_none, NULL, EPB_FLASH_PAGE, EPB_FLASH_PROG,
                                               CALSTORE_ERASED, {EPB_FLASH_SLOT0, EPB_FLASH_SLOT1},
                                               EPB_FLASH_PAGE};
-    struct app_cfg cfg;
+    /* Static, not on the stack: the M0+ image has 1 KiB of stack (docs/build.md). */
+    static struct app_cfg cfg;
+    static struct app_result r;
     /* Seed 000's budget and the default stillness thresholds at the ADIS default 819.2 SPS. */
     (void)app_cfg_default(&cfg, adis_imu_sample_rate_msps(ADIS_IMU_SMPL_PRD_DEFAULT));
     for (;;) {
-        struct app_result r;
         unsigned i;
         if (sensor_up(hal) != INC_OK || calstore_init(&store, &fc) != INC_OK ||
             app_init(&app, &cfg, &sensor, &store) != INC_OK) {

@@ -78,7 +78,7 @@ void usage()
         "  --csv FILE          samples (time, gyro x y z deg/s, accel x y z g, temp) as imu_replay reads\n"
         "  --est-csv FILE      one row per estimate\n"
         "  --record-out FILE   the calibration record image written to flash (656 bytes)\n"
-        "  --vcd FILE          the SPI bus and data-ready pins, first --vcd-ms ms of the parked car\n"
+        "  --vcd FILE          the SPI bus and data-ready pins, the first --vcd-ms ms of the estimates\n"
         "  --vcd-ms MS         length of the VCD window (default 10; a full run would be gigabytes)\n");
 }
 
@@ -347,6 +347,7 @@ int main(int argc, char **argv)
     }
     static struct sim_vcd vcd;
     bool vcd_open = false;
+    const double vcd_t0 = epb_rig_now_s(rig);
     if (!o.vcd.empty()) {
         if (epb_rig_vcd_open(rig, &vcd, o.vcd.c_str()) != INC_OK) {
             std::fprintf(stderr, "epb_demo: cannot write %s\n", o.vcd.c_str());
@@ -380,7 +381,7 @@ int main(int argc, char **argv)
             if (pi->temp_lsb_c > 0.0) std::fprintf(csv, ",%.7f", q16(s.temp_c));
             std::fprintf(csv, "\n");
         }
-        if (vcd_open && epb_rig_scenario_s(rig) * 1e3 >= o.vcd_ms) {
+        if (vcd_open && (epb_rig_now_s(rig) - vcd_t0) * 1e3 >= o.vcd_ms) {
             sim_vcd_close(&vcd);
             vcd_open = false;
         }

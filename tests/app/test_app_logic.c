@@ -1,0 +1,508 @@
+/*
+ * The EPB application's logic on scripted samples (no simulated bus): the calibration binding and
+ * what every load status does, the per-estimate budget composition (calibrated or not, the
+ * temperature model covering the temperature or not, the margin, the measured noise), the block
+ * and stillness bookkeeping, read errors and saturation, and the end-of-line steps with exact
+ * expected values. Host, QEMU (Cortex-M) and rv32imac.
+ */
+#include <string.h>
+
+#include "inclino/app.h"
+#include "unit.h"
+
+/* ---- A scripted sensor ------------------------------------------------------------------------ */
+
+struct script {
+    struct app_sample s;        /* what every read returns ... */
+    int32_t wobble_x;           /* ... with x + wobble on odd reads, x - wobble on even ones */
+    uint32_t fail_every;        /* every n-th read fails (0: never) */
+    int fail_err;
+    int id_err;                 /* identity read error */
+    struct calrec_binding id;
+    uint32_t reads;
+};
+
+static int script_read(void *ctx, struct app_sample *out)
+{
+    struct script *sc = ctx;
+    sc->reads++;
+    if (sc->fail_every != 0u && sc->reads % sc->fail_every == 0u) {
+        return sc->fail_err;
+    }
+    *out = sc->s;
+    out->accel_g[0] += (sc->reads & 1u) ? sc->wobble_x : -sc->wobble_x;
+    return INC_OK;
+}
+
+static int script_identity(void *ctx, struct calrec_binding *out)
+{
+    struct script *sc = ctx;
+    if (sc->id_err != INC_OK) {
+        return sc->id_err;
+    }
+    *out = sc->id;
+    return INC_OK;
+}
+
+static const struct app_sensor_ops script_ops = {script_read, script_identity};
+
+static struct script sc;
+static struct app_sensor sensor = {&script_ops, &sc};
+
+#define G(mg) ((fx_q16_t)(((mg) * 65536 + ((mg) >= 0 ? 500 : -500)) / 1000))
+
+static void script_reset(void)
+{
+    memset(&sc, 0, sizeof sc);
+    sc.s.accel_g[0] = G(100);
+    sc.s.accel_g[1] = 0;
+    sc.s.accel_g[2] = G(995);
+    sc.s.temp_c = FX_Q16_INT(25);
+    sc.s.flags = APP_S_HAVE_GYRO | APP_S_HAVE_TEMP;
+    sc.id.family = CALREC_FAMILY_ADIS163XX;
+    sc.id.product = 16405u;
+}
+
+/* ---- A RAM flash for the store ------------------------------------------------------------------ */
+
+#define PAGE 1024u
+static uint8_t flash[2u * PAGE];
+
+static int ram_read(void *ctx, uint32_t addr, uint8_t *buf, uint32_t len)
+{
+    (void)ctx;
+    memcpy(buf, &flash[addr], len);
+    return INC_OK;
+}
+
+static int ram_program(void *ctx, uint32_t addr, const uint8_t *buf, uint32_t len)
+{
+    uint32_t i;
+    (void)ctx;
+    for (i = 0; i < len; i++) {
+        flash[addr + i] &= buf[i];
+    }
+    return INC_OK;
+}
+
+static int ram_erase(void *ctx, uint32_t addr)
+{
+    (void)ctx;
+    memset(&flash[addr], 0xFF, PAGE);
+    return INC_OK;
+}
+
+static const struct calstore_flash_ops ram_ops = {ram_read, ram_program, ram_erase};
+static struct calstore store;
+
+static void store_reset(void)
+{
+    static const struct calstore_config c = {&ram_ops, NULL, PAGE, 8u, CALSTORE_ERASED, {0u, PAGE}, PAGE};
+    memset(flash, 0xFF, sizeof flash);
+    REQUIRE(calstore_init(&store, &c) == INC_OK);
+}
+
+/* A record for the scripted sensor: x offset +10 mg, x gain 1.01, parabola temperature models
+ * of bias and scale centred at 25 degC over +-40 degC. */
+static void make_record(struct calrec *r, bool tscale)
+{
+    unsigned i;
+    calrec_set_default(r);
+    r->binding = sc.id;
+    r->acc_offset[0] = G(10);
+    r->acc_gain[0] = 1084479242; /* 1.01 */
+    for (i = 0; i < 3u; i++) {
+        r->acc_tbias[i].kind = CALREC_TM_PARABOLA;
+        r->acc_tbias[i].t_ref = FX_Q16_INT(25);
+        r->acc_tbias[i].t_span = FX_Q16_INT(40);
+        r->acc_tbias[i].p[1] = G(1);
+        if (tscale) {
+            r->acc_tscale[i].kind = CALREC_TM_LINEAR;
+            r->acc_tscale[i].t_ref = FX_Q16_INT(25);
+            r->acc_tscale[i].t_span = FX_Q16_INT(40);
+            r->acc_tscale[i].p[1] = 1073742; /* 0.1 % */
+        }
+    }
+}
+
+static struct app app;
+static struct app_cfg cfg;
+
+static void cfg_small(void)
+{
+    REQUIRE(app_cfg_default(&cfg, 819200u) == INC_OK);
+    cfg.still.window = 16u;
+    cfg.avg_n = 64u;
+}
+
+/* Run one block of scripted samples through app_step. */
+static int run_block(struct app_result *r)
+{
+    uint32_t k;
+    for (k = 0; k < 10u * cfg.avg_n; k++) {
+        struct app_sample s;
+        bool done = false;
+        const int err = script_read(&sc, &s);
+        const int e2 = app_step(&app, &s, err, NULL, &done, r);
+        if (e2 != INC_OK) {
+            return e2;
+        }
+        if (done) {
+            return INC_OK;
+        }
+    }
+    return INC_ERR_TIMEOUT;
+}
+
+/* ---- Tests -------------------------------------------------------------------------------------- */
+
+static void test_cfg(void)
+{
+    struct app_cfg c;
+    CHECK_ERR(app_cfg_default(NULL, 819200u), INC_ERR_NULL);
+    CHECK_ERR(app_cfg_default(&c, 9999u), INC_ERR_INVAL);
+    CHECK_ERR(app_cfg_default(&c, 10000001u), INC_ERR_INVAL);
+    REQUIRE(app_cfg_default(&c, 819200u) == INC_OK);
+    CHECK_EQ_INT(c.still.window, 256);   /* round(819.2 * 0.3125) */
+    CHECK_EQ_INT(c.avg_n, 2048);
+    CHECK_EQ_INT(c.budget.nonlinearity_g, 655);  /* 10 mg */
+    CHECK_EQ_INT(c.budget.temp_uncomp_g, 3277);  /* 50 mg */
+    CHECK_OK(app_cfg_check(&c));
+    REQUIRE(app_cfg_default(&c, 250000u) == INC_OK);
+    CHECK_EQ_INT(c.still.window, 78);
+    CHECK_EQ_INT(c.avg_n, 624);
+    CHECK_ERR(app_cfg_check(NULL), INC_ERR_NULL);
+    c.avg_n = 625u; /* not a multiple of the window */
+    CHECK_ERR(app_cfg_check(&c), INC_ERR_INVAL);
+    c.avg_n = 624u;
+    c.temp_step_c = 0;
+    CHECK_ERR(app_cfg_check(&c), INC_ERR_INVAL);
+    c.temp_step_c = FX_Q16_HALF;
+    c.budget.offset_g = -1;
+    CHECK_ERR(app_cfg_check(&c), INC_ERR_INVAL);
+    c.budget.offset_g = 0;
+    c.budget.exceed_expected = FX_Q16_ONE; /* E / M = 1/10 > 2^-4: not a tail */
+    c.budget.lifetime_runs = 10u;
+    CHECK_ERR(app_cfg_check(&c), INC_ERR_INVAL);
+    c.budget.lifetime_runs = 200000u;
+    c.budget.exceed_expected = 66;
+    c.slope.slope_axis = 2u; /* same as the gravity axis */
+    CHECK_ERR(app_cfg_check(&c), INC_ERR_INVAL);
+    c.slope.slope_axis = 0u;
+    c.temp_margin_c = -1;
+    CHECK_ERR(app_cfg_check(&c), INC_ERR_INVAL);
+}
+
+static void test_init_errors(void)
+{
+    struct app_sensor bad = {NULL, &sc};
+    struct app_result r;
+    bool done;
+    script_reset();
+    cfg_small();
+    CHECK_ERR(app_init(NULL, &cfg, &sensor, NULL), INC_ERR_NULL);
+    CHECK_ERR(app_init(&app, &cfg, &bad, NULL), INC_ERR_NULL);
+    sc.id_err = INC_ERR_BUS;
+    CHECK_ERR(app_init(&app, &cfg, &sensor, NULL), INC_ERR_BUS);
+    CHECK(!app.ready);
+    CHECK_ERR(app_step(&app, &sc.s, 0, NULL, &done, &r), INC_ERR_STATE);
+    CHECK_ERR(app_measure(&app, &r), INC_ERR_STATE);
+    CHECK(!app_calibrated(&app));
+    cfg.still.window = 1u;
+    sc.id_err = INC_OK;
+    CHECK_ERR(app_init(&app, &cfg, &sensor, NULL), INC_ERR_INVAL);
+}
+
+/* No store: uncalibrated. The budget switches to the uncalibrated terms; nothing is valid. */
+static void test_uncalibrated(void)
+{
+    struct app_result r;
+    struct slope_cfg scfg;
+    struct slope_input in;
+    struct slope_result expect;
+    fx_q16_t k;
+    script_reset();
+    cfg_small();
+    REQUIRE(app_init(&app, &cfg, &sensor, NULL) == INC_OK);
+    CHECK_ERR(app.cal_status, INC_ERR_NOT_CALIBRATED);
+    CHECK(!app_calibrated(&app));
+    REQUIRE(run_block(&r) == INC_OK);
+    CHECK_EQ_INT(r.n, 64);
+    CHECK_EQ_INT(r.accel_g[0], G(100)); /* passed through */
+    CHECK_EQ_INT(r.accel_g[2], G(995));
+    CHECK_EQ_INT(r.temp_c, FX_Q16_INT(25));
+    CHECK_EQ_INT(r.still_state, STILL_AT_REST);
+    CHECK_EQ_INT(r.motion_windows, 0);
+    /* Zero variance: sqrt((0 + 1) * 16 / 15) rounded up -> 2 LSB. */
+    CHECK_EQ_INT(r.sigma_meas_g, 2);
+    REQUIRE(slope_sigma_factor(200000u, 66, &k) == INC_OK);
+    CHECK_EQ_INT(r.budget.k_sigma, k);
+    CHECK_EQ_INT(r.budget.sensitivity, cfg.budget.sensitivity_uncal + cfg.budget.tscale_uncomp);
+    CHECK_EQ_INT(r.budget.offset_g, cfg.budget.offset_uncal_g);
+    CHECK_EQ_INT(r.budget.temperature_g, cfg.budget.temp_uncomp_g);
+    CHECK_EQ_INT(r.budget.noise_sigma_g, cfg.budget.noise_sigma_g);
+    CHECK_EQ_HEX(r.flags, APP_F_NOT_CALIBRATED | APP_F_TEMP_UNCOMP);
+    CHECK(!r.valid);
+    CHECK(!r.slope.valid);
+    CHECK((r.slope.flags & SLOPE_F_NOT_CALIBRATED) != 0u);
+    /* The estimate is slope_estimate on the same mean with the composed budget, exactly. */
+    scfg = cfg.slope;
+    scfg.budget = r.budget;
+    memset(&in, 0, sizeof in);
+    in.accel_g[0] = G(100);
+    in.accel_g[2] = G(995);
+    in.n_samples = 64u;
+    in.still = true;
+    in.calibrated = false;
+    REQUIRE(slope_estimate(&scfg, &in, &expect) == INC_OK);
+    CHECK_EQ_INT(r.slope.slope_deg, expect.slope_deg);
+    CHECK_EQ_INT(r.slope.bound_deg, expect.bound_deg);
+    CHECK_EQ_INT(r.slope.flags, expect.flags);
+    CHECK_EQ_INT(r.cal_status, INC_ERR_NOT_CALIBRATED);
+}
+
+/* A record bound to the sensor: the correction is cal_acc_apply's, the budget the calibrated
+ * one, compensated where the models cover the temperature (with the margin). */
+static void test_calibrated(void)
+{
+    struct calrec rec;
+    struct cal_acc ref;
+    struct app_result r;
+    fx_q16_t out[3];
+    script_reset();
+    cfg_small();
+    store_reset();
+    make_record(&rec, true);
+    REQUIRE(calstore_save(&store, &rec, NULL) == INC_OK);
+    REQUIRE(app_init(&app, &cfg, &sensor, &store) == INC_OK);
+    CHECK_OK(app.cal_status);
+    CHECK(app_calibrated(&app));
+    REQUIRE(run_block(&r) == INC_OK);
+    rec.valid = true;
+    REQUIRE(cal_acc_init(&ref, &rec, FX_Q16_INT(25)) == INC_OK);
+    REQUIRE(cal_acc_apply(&ref, sc.s.accel_g, out) == INC_OK);
+    CHECK_EQ_INT(r.accel_g[0], out[0]);
+    CHECK_EQ_INT(r.accel_g[2], out[2]);
+    CHECK(out[0] != sc.s.accel_g[0]); /* the correction did something */
+    CHECK_EQ_INT(r.budget.sensitivity, cfg.budget.sensitivity);
+    CHECK_EQ_INT(r.budget.offset_g, cfg.budget.offset_g);
+    CHECK_EQ_INT(r.budget.temperature_g, cfg.budget.temp_comp_g);
+    CHECK_EQ_INT(r.flags, 0);
+    CHECK(r.valid);
+    CHECK(r.slope.valid);
+
+    /* 65.5 degC: outside 25 +- 40 but within the 1 degC margin -> still compensated. */
+    sc.s.temp_c = FX_Q16_INT(65) + FX_Q16_HALF;
+    REQUIRE(run_block(&r) == INC_OK);
+    CHECK_EQ_INT(r.budget.temperature_g, cfg.budget.temp_comp_g);
+    CHECK_EQ_INT(r.flags, 0);
+    REQUIRE(cal_acc_init(&ref, &rec, sc.s.temp_c) == INC_OK);
+    REQUIRE(cal_acc_apply(&ref, sc.s.accel_g, out) == INC_OK);
+    CHECK_EQ_INT(r.accel_g[0], out[0]); /* models re-evaluated at the new temperature */
+    /* 66.5 degC: beyond the margin -> the uncompensated terms. */
+    sc.s.temp_c = FX_Q16_INT(66) + FX_Q16_HALF;
+    REQUIRE(run_block(&r) == INC_OK);
+    CHECK_EQ_INT(r.budget.temperature_g, cfg.budget.temp_uncomp_g);
+    CHECK_EQ_INT(r.budget.sensitivity, cfg.budget.sensitivity + cfg.budget.tscale_uncomp);
+    CHECK_EQ_HEX(r.flags, APP_F_TEMP_UNCOMP);
+    /* No temperature output: uncompensated too (and the default temperature is used). */
+    sc.s.temp_c = FX_Q16_INT(25);
+    sc.s.flags = APP_S_HAVE_GYRO;
+    REQUIRE(run_block(&r) == INC_OK);
+    CHECK_EQ_HEX(r.flags, APP_F_TEMP_UNCOMP);
+    CHECK_EQ_INT(r.temp_c, cfg.temp_default_c);
+
+    /* A record with no scale model: offset compensated, scale not. */
+    script_reset();
+    store_reset();
+    make_record(&rec, false);
+    REQUIRE(calstore_save(&store, &rec, NULL) == INC_OK);
+    REQUIRE(app_init(&app, &cfg, &sensor, &store) == INC_OK);
+    REQUIRE(run_block(&r) == INC_OK);
+    CHECK_EQ_INT(r.budget.temperature_g, cfg.budget.temp_comp_g);
+    CHECK_EQ_INT(r.budget.sensitivity, cfg.budget.sensitivity + cfg.budget.tscale_uncomp);
+    CHECK_EQ_HEX(r.flags, APP_F_TEMP_UNCOMP);
+}
+
+/* Every non-zero load status leaves the application uncalibrated. */
+static void test_binding_and_store(void)
+{
+    struct calrec rec;
+    struct app_result r;
+    script_reset();
+    cfg_small();
+    store_reset();
+    /* erased flash */
+    REQUIRE(app_init(&app, &cfg, &sensor, &store) == INC_OK);
+    CHECK_ERR(app.cal_status, INC_ERR_NOT_CALIBRATED);
+    /* a record of another part (an ADIS16364 with a serial number) */
+    make_record(&rec, true);
+    rec.binding.product = 16364u;
+    rec.binding.serial = 0x42u;
+    REQUIRE(calstore_save(&store, &rec, NULL) == INC_OK);
+    REQUIRE(app_init(&app, &cfg, &sensor, &store) == INC_OK);
+    CHECK_ERR(app.cal_status, INC_ERR_MISMATCH);
+    CHECK(!app_calibrated(&app));
+    REQUIRE(run_block(&r) == INC_OK);
+    CHECK(!r.valid);
+    CHECK((r.flags & APP_F_NOT_CALIBRATED) != 0u);
+    CHECK_EQ_INT(r.accel_g[0], G(100)); /* not corrected with a foreign record */
+    /* corrupt: one bit of the stored image flipped */
+    store_reset();
+    make_record(&rec, true);
+    REQUIRE(calstore_save(&store, &rec, NULL) == INC_OK);
+    flash[100] ^= 0x10u;
+    REQUIRE(app_init(&app, &cfg, &sensor, &store) == INC_OK);
+    CHECK_ERR(app.cal_status, INC_ERR_CRC);
+    CHECK(!app_calibrated(&app));
+}
+
+/* Motion, saturation and read errors invalidate a block; the slope is still reported. */
+static void test_block_flags(void)
+{
+    struct app_result r;
+    struct calrec rec;
+    script_reset();
+    cfg_small();
+    store_reset();
+    make_record(&rec, true);
+    REQUIRE(calstore_save(&store, &rec, NULL) == INC_OK);
+    REQUIRE(app_init(&app, &cfg, &sensor, &store) == INC_OK);
+    /* +-100 mg on x every other sample: variance (100 mg)^2 > (30 mg)^2 */
+    sc.wobble_x = G(100);
+    REQUIRE(run_block(&r) == INC_OK);
+    CHECK(!r.valid);
+    CHECK((r.flags & APP_F_NOT_STILL) != 0u);
+    CHECK((r.slope.flags & SLOPE_F_NOT_STILL) != 0u);
+    CHECK_EQ_INT(r.motion_windows, 4);
+    CHECK_EQ_INT(r.still_state, STILL_MOVING);
+    CHECK(r.sigma_meas_g >= G(100)); /* the measured noise widens the bound */
+    CHECK_EQ_INT(r.budget.noise_sigma_g, r.sigma_meas_g);
+    /* still again: at rest after two quiet windows, within the next block */
+    sc.wobble_x = 0;
+    REQUIRE(run_block(&r) == INC_OK);
+    CHECK(r.valid);
+    /* saturation */
+    sc.s.flags |= APP_S_ACCEL_SAT;
+    REQUIRE(run_block(&r) == INC_OK);
+    CHECK(!r.valid);
+    CHECK_EQ_HEX(r.flags, APP_F_SATURATED);
+    CHECK(r.slope.valid); /* the slope itself passed: the application says no */
+    sc.s.flags &= ~APP_S_ACCEL_SAT;
+    /* one failed read in four: counted, the block takes 64 good samples */
+    sc.fail_every = 4u;
+    sc.fail_err = INC_ERR_TIMEOUT;
+    REQUIRE(run_block(&r) == INC_OK);
+    CHECK_EQ_INT(r.n, 64);
+    CHECK(r.sensor_errors >= 21u);
+    CHECK_EQ_HEX(r.flags, APP_F_SENSOR);
+    CHECK(!r.valid);
+    cfg.max_sensor_errors = 100u;
+    REQUIRE(app_init(&app, &cfg, &sensor, &store) == INC_OK);
+    REQUIRE(run_block(&r) == INC_OK);
+    CHECK(r.valid);
+    /* a dead sensor: app_measure gives up with its error */
+    sc.fail_every = 1u;
+    sc.fail_err = INC_ERR_BUS;
+    sc.reads = 0;
+    CHECK_ERR(app_measure(&app, &r), INC_ERR_BUS);
+    CHECK_EQ_INT(sc.reads, 3u * cfg.avg_n); /* gave up after three blocks' worth of failures */
+    sc.fail_every = 0u;
+    CHECK_OK(app_measure(&app, &r));
+    CHECK(r.valid);
+    /* the missed-sample count of the adapter is summed */
+    sc.s.missed = 2u;
+    CHECK_OK(app_measure(&app, &r));
+    CHECK_EQ_INT(r.missed, 128);
+}
+
+static void test_eol(void)
+{
+    static const int32_t one = FX_Q16_ONE;
+    struct app_face faces[CAL_FACES], f;
+    struct calrec rec;
+    static struct app app2;
+    unsigned i, k;
+    script_reset();
+    cfg_small();
+    store_reset();
+    REQUIRE(app_init(&app, &cfg, &sensor, &store) == INC_OK);
+    CHECK_ERR(app_eol_face(&app, 0u, G(50), FX_Q16_INT(2), &f), INC_ERR_INVAL);
+    CHECK_ERR(app_eol_face(NULL, 8u, G(50), FX_Q16_INT(2), &f), INC_ERR_NULL);
+    /* The six faces of a part with x offset +20 mg and gain 1.02, y and z ideal; gyro x 0.5 deg/s. */
+    for (k = 0; k < CAL_FACES; k++) {
+        memset(&sc.s.accel_g, 0, sizeof sc.s.accel_g);
+        sc.s.accel_g[k / 2u] = (k & 1u) ? -one : one;
+        if (k / 2u == 0u) {
+            sc.s.accel_g[0] = (k & 1u) ? -G(1020) : G(1020);
+        }
+        sc.s.accel_g[0] += G(20);
+        sc.s.gyro_dps[0] = FX_Q16_HALF;
+        REQUIRE(app_eol_face(&app, 32u, G(50), FX_Q16_INT(2), &faces[k]) == INC_OK);
+        CHECK_EQ_INT(faces[k].n, 32);
+        CHECK_EQ_INT(faces[k].flags, APP_S_HAVE_GYRO | APP_S_HAVE_TEMP);
+        for (i = 0; i < 3u; i++) {
+            CHECK_EQ_INT(faces[k].accel_g[i], sc.s.accel_g[i]); /* raw means, exact */
+        }
+        CHECK_EQ_INT(faces[k].temp_c, FX_Q16_INT(25));
+    }
+    calrec_set_default(&rec);
+    CHECK_ERR(app_eol_six_position(NULL, &rec), INC_ERR_NULL);
+    REQUIRE(app_eol_six_position(faces, &rec) == INC_OK);
+    CHECK_EQ_INT(rec.acc_offset[0], G(20));
+    CHECK_EQ_INT(rec.acc_gain[0], (int64_t)G(1020) * 16384);   /* (A+ - A-) / 2 in Q30, exact */
+    CHECK_EQ_INT(rec.acc_offset[1], 0);
+    CHECK_EQ_INT(rec.acc_gain[2], FX_Q30_ONE);
+    CHECK_EQ_INT(rec.gyro_offset[0], FX_Q16_HALF);
+    CHECK_EQ_INT(rec.gyro_offset[1], 0);
+    /* Saved, bound to the sensor; a fresh instance loads it. */
+    CHECK_ERR(app_eol_save(&app, &rec, NULL, NULL), INC_ERR_NULL);
+    REQUIRE(app_eol_save(&app, &rec, &store, NULL) == INC_OK);
+    CHECK(calrec_binding_equal(&rec.binding, &sc.id));
+    CHECK(!app_calibrated(&app)); /* the running instance keeps its state until a restart */
+    REQUIRE(app_init(&app2, &cfg, &sensor, &store) == INC_OK);
+    CHECK_OK(app2.cal_status);
+    CHECK(app_calibrated(&app2));
+    CHECK_EQ_INT(app2.rec.acc_offset[0], G(20));
+
+    /* Faces out of order: refused, rec untouched. */
+    f = faces[0];
+    faces[0] = faces[1];
+    faces[1] = f;
+    CHECK_ERR(app_eol_six_position(faces, &rec), INC_ERR_DEGENERATE);
+    CHECK_EQ_INT(rec.acc_offset[0], G(20));
+    faces[1] = faces[0];
+    faces[0] = f;
+    /* A gyro offset beyond 30 deg/s */
+    for (k = 0; k < CAL_FACES; k++) {
+        faces[k].gyro_dps[1] = FX_Q16_INT(31);
+    }
+    CHECK_ERR(app_eol_six_position(faces, &rec), INC_ERR_RANGE);
+    /* Without gyro the gyro offset is left alone. */
+    for (k = 0; k < CAL_FACES; k++) {
+        faces[k].flags = APP_S_HAVE_TEMP;
+    }
+    rec.gyro_offset[1] = 7;
+    REQUIRE(app_eol_six_position(faces, &rec) == INC_OK);
+    CHECK_EQ_INT(rec.gyro_offset[1], 7);
+
+    /* A face that moves: 100 mg wobble > the 50 mg span. */
+    sc.wobble_x = G(100);
+    CHECK_ERR(app_eol_face(&app, 32u, G(50), FX_Q16_INT(2), &f), INC_ERR_MOTION);
+    sc.wobble_x = 0;
+    sc.fail_every = 5u;
+    sc.fail_err = INC_ERR_DEVICE;
+    CHECK_ERR(app_eol_face(&app, 32u, G(50), FX_Q16_INT(2), &f), INC_ERR_DEVICE);
+}
+
+int main(void)
+{
+    UNIT_RUN(test_cfg);
+    UNIT_RUN(test_init_errors);
+    UNIT_RUN(test_uncalibrated);
+    UNIT_RUN(test_calibrated);
+    UNIT_RUN(test_binding_and_store);
+    UNIT_RUN(test_block_flags);
+    UNIT_RUN(test_eol);
+    return unit_report();
+}
