@@ -390,7 +390,6 @@ int app_measure(struct app *a, struct app_result *res)
 {
     struct app_sample s;
     bool done = false;
-    int last = INC_OK;
     if (a == NULL || res == NULL) {
         return INC_ERR_NULL;
     }
@@ -406,14 +405,11 @@ int app_measure(struct app *a, struct app_result *res)
         if (done) {
             return INC_OK;
         }
-        if (err != INC_OK) {
-            last = err;
-            /* A part that keeps failing: give up on this block after as many failures as three
-             * blocks' worth of samples (a live part fails now and then; a dead one always). */
-            if (a->errors / 3u >= a->cfg.avg_n) {
-                block_reset(a);
-                return last;
-            }
+        /* A part that keeps failing: give up on this block after as many failures as three
+         * blocks' worth of samples (a live part fails now and then; a dead one always). */
+        if (err != INC_OK && a->errors / 3u >= a->cfg.avg_n) {
+            block_reset(a);
+            return err;
         }
     }
 }

@@ -24,23 +24,23 @@ struct script {
 
 static int script_read(void *ctx, struct app_sample *out)
 {
-    struct script *sc = ctx;
-    sc->reads++;
-    if (sc->fail_every != 0u && sc->reads % sc->fail_every == 0u) {
-        return sc->fail_err;
+    struct script *p = ctx;
+    p->reads++;
+    if (p->fail_every != 0u && p->reads % p->fail_every == 0u) {
+        return p->fail_err;
     }
-    *out = sc->s;
-    out->accel_g[0] += (sc->reads & 1u) ? sc->wobble_x : -sc->wobble_x;
+    *out = p->s;
+    out->accel_g[0] += (p->reads & 1u) ? p->wobble_x : -p->wobble_x;
     return INC_OK;
 }
 
 static int script_identity(void *ctx, struct calrec_binding *out)
 {
-    struct script *sc = ctx;
-    if (sc->id_err != INC_OK) {
-        return sc->id_err;
+    const struct script *p = ctx;
+    if (p->id_err != INC_OK) {
+        return p->id_err;
     }
-    *out = sc->id;
+    *out = p->id;
     return INC_OK;
 }
 

@@ -157,7 +157,6 @@ static void spawn_bumps(struct epb_rig *r, double t)
     }
     while (r->next_bump_s <= t) {
         struct epb_rig_bump b;
-        unsigned k;
         b.t0 = r->next_bump_s;
         b.amp_g = v->bump_amp_g * (0.3 + 0.7 * sim_rng_uniform(&r->rng));
         b.pitch_deg = v->bump_pitch_deg * (0.3 + 0.7 * sim_rng_uniform(&r->rng));
@@ -168,6 +167,7 @@ static void spawn_bumps(struct epb_rig *r, double t)
         if (r->bump_count < EPB_RIG_BUMPS) {
             r->bumps[r->bump_count++] = b;
         } else {
+            unsigned k;
             for (k = 1; k < EPB_RIG_BUMPS; k++) {
                 r->bumps[k - 1] = r->bumps[k];
             }
