@@ -4,9 +4,9 @@
 #         -DVCD2TRACE=<exe> -DMIN_BURSTS=<n>] -P run_demo.cmake <command> [args...]
 #
 # Passes only when the command exits with exactly EXPECT_STATUS, every MATCH regular expression
-# is found in its standard output and no NOMATCH one is. With VCD: the VCD the command wrote is
-# decoded by vcd2trace (mode 3, 16-bit frames on cs0) and must hold at least MIN_BURSTS ADIS
-# burst reads (MOSI 3E00 followed by the output words).
+# is found in its output (standard output and error) and no NOMATCH one is. With VCD: the VCD
+# the command wrote is decoded by vcd2trace (mode 3, 16-bit frames on cs0) and must hold at
+# least MIN_BURSTS ADIS burst reads (MOSI 3E00 followed by the output words).
 if(NOT DEFINED EXPECT_STATUS)
   message(FATAL_ERROR "run_demo.cmake: -DEXPECT_STATUS=<n> is required")
 endif()
@@ -31,7 +31,8 @@ if(NOT cmd)
 endif()
 execute_process(COMMAND ${cmd} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err
                 TIMEOUT 300)
-message("${out}${err}")
+set(out "${out}${err}") # MATCH / NOMATCH look at both streams
+message("${out}")
 if(NOT "${status}" STREQUAL "${EXPECT_STATUS}")
   message(FATAL_ERROR "expected exit status ${EXPECT_STATUS}, got '${status}'")
 endif()

@@ -45,6 +45,7 @@ struct Options {
     uint64_t part_seed = 0;     // 0: part "A" (sim_calpart_paper)
     uint64_t seed = 1;
     double length_s = 7.5;
+    double block_s = 0.0;       // 0: app_cfg_default's 2.5 s
     double face_s = 1.0;
     bool tcal = true;
     bool eol = true;
@@ -69,6 +70,7 @@ void usage()
         "  --part-seed N       errors of a part drawn from seed N (default 0: part A, seed 000/002)\n"
         "  --seed N            noise and vibration seed (default 1)\n"
         "  --length S          parked scenario length, s (default 7.5: three 2.5 s estimates)\n"
+        "  --block-s S         samples averaged per estimate, s (default 2.5; whole stillness windows)\n"
         "  --face-s S          end of line: seconds averaged per face (default 1)\n"
         "  --no-tcal           end of line at 25 degC only (no three-point temperature step)\n"
         "  --tcal-temps C,H    cold and hot soak temperatures (default -20,60)\n"
@@ -113,6 +115,7 @@ bool parse(int argc, char **argv, Options &o)
         else if (a == "--part-seed") { i++; ok = unum(v, o.part_seed); }
         else if (a == "--seed") { i++; ok = unum(v, o.seed); }
         else if (a == "--length") ok = take(o.length_s) && o.length_s > 0.0 && o.length_s <= 3600.0;
+        else if (a == "--block-s") ok = take(o.block_s) && o.block_s >= 0.1 && o.block_s <= 600.0;
         else if (a == "--face-s") ok = take(o.face_s) && o.face_s >= 0.05 && o.face_s <= 600.0;
         else if (a == "--no-tcal") o.tcal = false;
         else if (a == "--tcal-temps") {
@@ -208,6 +211,10 @@ int main(int argc, char **argv)
     const epb_rig_part_info *pi = epb_rig_info(rig);
     struct app_cfg cfg;
     app_cfg_default(&cfg, epb_rig_rate_mhz(rig));
+    if (o.block_s > 0.0) {
+        const double w = std::floor(o.block_s * epb_rig_info(rig)->rate_sps / cfg.still.window + 0.5);
+        cfg.avg_n = static_cast<uint32_t>(std::max(1.0, w)) * cfg.still.window;
+    }
     const uint32_t n_face = static_cast<uint32_t>(std::lround(o.face_s * pi->rate_sps));
 
     std::printf("Inclino EPB demo: %s (pin-level model, %.1f SPS, accel LSB %.3f mg), errors of %s, seed %llu\n",

@@ -1,0 +1,50 @@
+# replay_vs_demo.cmake - the replay tool and the demo run the same firmware on the same samples:
+# the demo's samples (--csv) and record (--record-out), replayed with imu_replay, must give the
+# same slope estimates, digit for digit (the replay re-quantises each value to the part's LSB and
+# converts it back with the driver's conversion, so the application sees identical Q16 words).
+#
+#   cmake -DDEMO=<epb_demo> -DREPLAY=<imu_replay> -DDIR=<scratch dir> -P replay_vs_demo.cmake
+foreach(v DEMO REPLAY DIR)
+  if(NOT DEFINED ${v})
+    message(FATAL_ERROR "replay_vs_demo.cmake: -D${v}=... is required")
+  endif()
+endforeach()
+execute_process(COMMAND "${DEMO}" --csv "${DIR}/rvd.csv" --est-csv "${DIR}/rvd_est.csv"
+                --record-out "${DIR}/rvd.rec" RESULT_VARIABLE st OUTPUT_QUIET TIMEOUT 300)
+if(NOT st EQUAL 0)
+  message(FATAL_ERROR "epb_demo failed (${st})")
+endif()
+execute_process(COMMAND "${REPLAY}" --record "${DIR}/rvd.rec" --blocks -o "${DIR}/rvd_replay.csv"
+                "${DIR}/rvd.csv" RESULT_VARIABLE st ERROR_VARIABLE err TIMEOUT 300)
+message("${err}")
+if(NOT st EQUAL 0)
+  message(FATAL_ERROR "imu_replay failed (${st})")
+endif()
+file(STRINGS "${DIR}/rvd_est.csv" demo_rows)
+file(STRINGS "${DIR}/rvd_replay.csv" replay_rows)
+list(REMOVE_AT demo_rows 0)
+list(REMOVE_AT replay_rows 0)
+list(LENGTH demo_rows nd)
+list(LENGTH replay_rows nr)
+if(NOT nd EQUAL nr OR nd EQUAL 0)
+  message(FATAL_ERROR "${nd} demo estimates, ${nr} replayed")
+endif()
+math(EXPR last "${nd} - 1")
+foreach(i RANGE ${last})
+  list(GET demo_rows ${i} d)
+  list(GET replay_rows ${i} r)
+  string(REPLACE "," ";" d "${d}")
+  string(REPLACE "," ";" r "${r}")
+  # demo: block,time_s,slope_deg,grade_pct,bound_deg,bound_pct,valid,...
+  # replay: line,...,block(17),slope_deg(18),grade_pct(19),...,valid(24)
+  list(GET d 2 ds)
+  list(GET d 3 dg)
+  list(GET d 6 dv)
+  list(GET r 18 rs)
+  list(GET r 19 rg)
+  list(GET r 24 rv)
+  message(STATUS "estimate ${i}: demo ${ds} deg ${dg} % valid ${dv}; replay ${rs} deg ${rg} % valid ${rv}")
+  if(NOT ds STREQUAL rs OR NOT dg STREQUAL rg OR NOT dv STREQUAL rv)
+    message(FATAL_ERROR "estimate ${i} differs")
+  endif()
+endforeach()
