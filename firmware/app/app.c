@@ -101,7 +101,7 @@ int app_cfg_check(const struct app_cfg *cfg)
     if (cfg == NULL) {
         return INC_ERR_NULL;
     }
-    if (cfg->avg_n == 0u || cfg->still.window < STILL_WINDOW_MIN ||
+    if (cfg->avg_n == 0u || cfg->avg_n > FX_SUM_MAX_COUNT || cfg->still.window < STILL_WINDOW_MIN ||
         cfg->still.window > STILL_WINDOW_MAX || cfg->avg_n % cfg->still.window != 0u ||
         cfg->temp_step_c <= 0 || cfg->temp_margin_c < 0 || !budget_ok(&cfg->budget)) {
         return INC_ERR_INVAL;

@@ -174,6 +174,8 @@ static void test_cfg(void)
     CHECK_ERR(app_cfg_check(NULL), INC_ERR_NULL);
     c.avg_n = 625u; /* not a multiple of the window */
     CHECK_ERR(app_cfg_check(&c), INC_ERR_INVAL);
+    c.avg_n = 78u * 27532115u; /* 2^31 + 58: the exact sums would overflow */
+    CHECK_ERR(app_cfg_check(&c), INC_ERR_INVAL);
     c.avg_n = 624u;
     c.temp_step_c = 0;
     CHECK_ERR(app_cfg_check(&c), INC_ERR_INVAL);

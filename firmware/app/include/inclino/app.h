@@ -72,7 +72,7 @@ struct app_budget {
 };
 
 struct app_cfg {
-    uint32_t avg_n;             /* samples per estimate, a multiple of still.window, >= 1 */
+    uint32_t avg_n;             /* samples per estimate, a multiple of still.window, 1..2^31 */
     struct still_cfg still;     /* in the sample units: Q16 deg/s and Q16 g */
     struct slope_cfg slope;     /* method, axes, limits; its budget is composed per estimate
                                    (the one given here is ignored) */
@@ -161,7 +161,7 @@ struct app {
 int app_cfg_default(struct app_cfg *cfg, uint32_t rate_mhz);
 
 /*
- * Check cfg: avg_n >= 1 and a multiple of still.window, still_init's and slope_cfg_check's
+ * Check cfg: avg_n in 1..2^31 and a multiple of still.window, still_init's and slope_cfg_check's
  * rules (with the composed budget), budget terms >= 0, temp_step_c > 0, temp_margin_c >= 0. 0, INC_ERR_NULL,
  * INC_ERR_INVAL.
  */
