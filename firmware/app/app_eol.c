@@ -15,10 +15,10 @@
 int app_eol_face(struct app *a, uint32_t n, fx_q16_t max_span_g, fx_q16_t max_span_dps,
                  struct app_face *out)
 {
-    struct cal_avg acc, gyro;
     struct fx_sum temp;
     uint32_t k, flags = APP_S_HAVE_GYRO | APP_S_HAVE_TEMP;
-    struct app_face f;
+    fx_q16_t acc_mean[3], gyro_mean[3] = {0, 0, 0}, temp_mean = 0;
+    unsigned i;
     int err;
     if (a == NULL || out == NULL) {
         return INC_ERR_NULL;
@@ -29,8 +29,8 @@ int app_eol_face(struct app *a, uint32_t n, fx_q16_t max_span_g, fx_q16_t max_sp
     if (n == 0u || n > FX_SUM_MAX_COUNT) {
         return INC_ERR_INVAL;
     }
-    cal_avg_reset(&acc);
-    cal_avg_reset(&gyro);
+    cal_avg_reset(&a->eol_a);
+    cal_avg_reset(&a->eol_g);
     fx_sum_reset(&temp);
     for (k = 0; k < n; k++) {
         struct app_sample s;
@@ -39,29 +39,30 @@ int app_eol_face(struct app *a, uint32_t n, fx_q16_t max_span_g, fx_q16_t max_sp
             return err;
         }
         flags &= s.flags;
-        (void)cal_avg_add(&acc, s.accel_g);
-        (void)cal_avg_add(&gyro, s.gyro_dps);
+        (void)cal_avg_add(&a->eol_a, s.accel_g);
+        (void)cal_avg_add(&a->eol_g, s.gyro_dps);
         (void)fx_sum_add(&temp, s.temp_c);
     }
-    err = cal_avg_mean(&acc, max_span_g, f.accel_g);
+    err = cal_avg_mean(&a->eol_a, max_span_g, acc_mean);
     if (err != INC_OK) {
         return err;
     }
     if ((flags & APP_S_HAVE_GYRO) != 0u) {
-        err = cal_avg_mean(&gyro, max_span_dps, f.gyro_dps);
+        err = cal_avg_mean(&a->eol_g, max_span_dps, gyro_mean);
         if (err != INC_OK) {
             return err;
         }
-    } else {
-        f.gyro_dps[0] = f.gyro_dps[1] = f.gyro_dps[2] = 0;
     }
-    f.temp_c = 0;
     if ((flags & APP_S_HAVE_TEMP) != 0u) {
-        (void)fx_sum_mean(&temp, &f.temp_c);
+        (void)fx_sum_mean(&temp, &temp_mean);
     }
-    f.n = n;
-    f.flags = flags & (APP_S_HAVE_GYRO | APP_S_HAVE_TEMP);
-    *out = f;
+    for (i = 0; i < 3u; i++) {
+        out->accel_g[i] = acc_mean[i];
+        out->gyro_dps[i] = gyro_mean[i];
+    }
+    out->temp_c = temp_mean;
+    out->n = n;
+    out->flags = flags & (APP_S_HAVE_GYRO | APP_S_HAVE_TEMP);
     return INC_OK;
 }
 
