@@ -42,19 +42,18 @@ struct part {
     int variant;               /* enum adis_imu_variant / enum sca3000_variant */
     int family_1640x;          /* ADIS: 1 = 1640x (TEMP_OUT 0.14), 0 = 1636x (0.136) */
     bool temp;                 /* the part has a temperature output */
-    double rate_sps;           /* the rate the firmware runs it at (for reference) */
 };
 
 static const struct part parts[] = {
-    {"adis16405", true, 3333u, ADIS_IMU_ADIS16405, 1, true, 819.2},
-    {"adis16400", true, 3333u, ADIS_IMU_ADIS16400, 1, true, 819.2},
-    {"adis16364", true, 1000u, ADIS_IMU_ADIS16364, 0, true, 819.2},
-    {"adis16362", true, 333u, ADIS_IMU_ADIS16362, 0, true, 819.2},
-    {"adis16360", true, 3333u, ADIS_IMU_ADIS16360, 0, true, 819.2},
-    {"sca3000-d01", false, 750u, SCA3000_D01, 0, true, 250.0},
-    {"sca3000-e02", false, 1000u, SCA3000_E02, 0, false, 125.0},
-    {"sca3000-e04", false, 2000u, SCA3000_E04, 0, false, 100.0},
-    {"sca3000-e05", false, 6250u, SCA3000_E05, 0, false, 200.0},
+    {"adis16405", true, 3333u, ADIS_IMU_ADIS16405, 1, true},
+    {"adis16400", true, 3333u, ADIS_IMU_ADIS16400, 1, true},
+    {"adis16364", true, 1000u, ADIS_IMU_ADIS16364, 0, true},
+    {"adis16362", true, 333u, ADIS_IMU_ADIS16362, 0, true},
+    {"adis16360", true, 3333u, ADIS_IMU_ADIS16360, 0, true},
+    {"sca3000-d01", false, 750u, SCA3000_D01, 0, true},
+    {"sca3000-e02", false, 1000u, SCA3000_E02, 0, false},
+    {"sca3000-e04", false, 2000u, SCA3000_E04, 0, false},
+    {"sca3000-e05", false, 6250u, SCA3000_E05, 0, false},
 };
 #define N_PARTS (sizeof parts / sizeof parts[0])
 
