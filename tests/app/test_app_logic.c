@@ -128,6 +128,21 @@ static void make_record(struct calrec *r, bool tscale)
 static struct app app;
 static struct app_cfg cfg;
 
+/* The smallest q with q * q >= v (bisection; the test's own, independent of fx_isqrt64). */
+static uint64_t ceil_sqrt(uint64_t v)
+{
+    uint64_t lo = 0, hi = 0xFFFFFFFFull;
+    while (lo < hi) {
+        const uint64_t mid = lo + (hi - lo) / 2u;
+        if (mid * mid >= v) {
+            hi = mid;
+        } else {
+            lo = mid + 1u;
+        }
+    }
+    return lo;
+}
+
 static void cfg_small(void)
 {
     REQUIRE(app_cfg_default(&cfg, 819200u) == INC_OK);
@@ -378,7 +393,25 @@ static void test_block_flags(void)
     CHECK((r.slope.flags & SLOPE_F_NOT_STILL) != 0u);
     CHECK_EQ_INT(r.motion_windows, 4);
     CHECK_EQ_INT(r.still_state, STILL_MOVING);
-    CHECK(r.sigma_meas_g >= G(100)); /* the measured noise widens the bound */
+    {
+        /* Two calibrated values alternate: the window variance is ((hi - lo) / 2)^2 (floor);
+         * the rms is ceil(sqrt((v + 1) * 16 / 15)). */
+        struct cal_acc ref;
+        fx_q16_t in[3], hi[3], lo[3];
+        uint64_t v, q;
+        rec.valid = true;
+        REQUIRE(cal_acc_init(&ref, &rec, FX_Q16_INT(25)) == INC_OK);
+        memcpy(in, sc.s.accel_g, sizeof in);
+        in[0] = sc.s.accel_g[0] + G(100);
+        REQUIRE(cal_acc_apply(&ref, in, hi) == INC_OK);
+        in[0] = sc.s.accel_g[0] - G(100);
+        REQUIRE(cal_acc_apply(&ref, in, lo) == INC_OK);
+        v = (uint64_t)((int64_t)(hi[0] - lo[0]) * (hi[0] - lo[0]) / 4);
+        v = ((v + 1u) * 16u + 14u) / 15u;
+        q = ceil_sqrt(v);
+        CHECK_EQ_INT(r.sigma_meas_g, q); /* the measured noise widens the bound */
+        CHECK(r.sigma_meas_g > G(98));
+    }
     CHECK_EQ_INT(r.budget.noise_sigma_g, r.sigma_meas_g);
     /* still again: at rest after two quiet windows, within the next block */
     sc.wobble_x = 0;

@@ -24,6 +24,13 @@
  * from the same still intervals (app_eol_six_position), and store the record bound to the
  * sensor through calstore (app_eol_save). A "power cycle" is a fresh app_init.
  *
+ * Arithmetic (tests/app prove each against exact values): the block means are round(sum / N) of
+ * exact int64 sums, ties away from zero, |error| <= 0.5 LSB Q16, never saturating; the correction
+ * is cal_acc_apply's and cal_gyro_apply's (cal.h bounds); the measured rms is
+ * ceil(sqrt((v + 1) * W / (W - 1))) from the detector's rounded-down window variance v, so never
+ * below the exact rms; the budget terms are copied, the sensitivity sum saturates below 0.5
+ * (a bound that wide is flagged anyway); slope, grade and bound are slope_estimate's (slope.h).
+ *
  * Units: Q16.16 g, deg/s, degC, deg, % (inclino/fx.h); ratios Q30. Freestanding C11, integer
  * only, no heap; struct app is caller-allocated (docs/benchmarks.md, "EPB demo", gives its
  * size). Not re-entrant per instance.
