@@ -8,16 +8,10 @@
  */
 #include "inclino/sca3000.h"
 
+#include "inclino/fx.h"
+
 /* ug per LSB: 0.75, 1, 2 and 6.25 mg (Linux scale in um/s^2 divided by 9.81). */
 static const uint32_t ug_per_lsb[4] = {750u, 1000u, 2000u, 6250u};
-
-/* num / den rounded to nearest, ties away from zero; den > 0. |num| < 2^62 here. */
-static int64_t div_round(int64_t num, int64_t den)
-{
-    const uint64_t mag = num < 0 ? (uint64_t)0 - (uint64_t)num : (uint64_t)num;
-    const uint64_t q = (mag + (uint64_t)den / 2u) / (uint64_t)den;
-    return num < 0 ? -(int64_t)q : (int64_t)q;
-}
 
 int sca3000_decode_accel(uint16_t word, int16_t *count)
 {
@@ -82,7 +76,7 @@ int sca3000_accel_to_q16_g(int32_t counts, enum sca3000_variant v, int32_t *g_q1
         return INC_ERR_RANGE;
     }
     /* |counts * lsb * 65536| <= 4096 * 6250 * 65536 = 1.7e12: exact in int64. */
-    *g_q16 = (int32_t)div_round((int64_t)counts * (int64_t)lsb * 65536, 1000000);
+    *g_q16 = fx_div64((int64_t)counts * (int64_t)lsb * 65536, 1000000u);
     return INC_OK;
 }
 
@@ -95,6 +89,6 @@ int sca3000_temp_to_q16_c(int32_t raw9, int32_t *c_q16)
         return INC_ERR_RANGE;
     }
     /* (raw - 214.6) / 1.8 degC = (10 raw - 2146) / 18; x 65536 stays below 2^24 * 18. */
-    *c_q16 = (int32_t)div_round(((int64_t)raw9 * 10 - 2146) * 65536, 18);
+    *c_q16 = fx_div64(((int64_t)raw9 * 10 - 2146) * 65536, 18u);
     return INC_OK;
 }

@@ -124,6 +124,15 @@ static int32_t mean_round(int64_t sum, uint32_t count)
     return fx_sat32(sum < 0 ? -(int64_t)q : (int64_t)q);
 }
 
+int32_t fx_div64(int64_t num, uint32_t den)
+{
+    if (den == 0u) return num > 0 ? INT32_MAX : (num < 0 ? INT32_MIN : 0);
+    /* |INT64_MIN| / den >= 2^31 saturates like |INT64_MIN + 1| / den: the same result, and
+     * mean_round never negates 2^63. */
+    if (num < -INT64_MAX) num = -INT64_MAX;
+    return mean_round(num, den);
+}
+
 void fx_sum_reset(struct fx_sum *acc)
 {
     if (acc == NULL) return;

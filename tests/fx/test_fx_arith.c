@@ -1,5 +1,6 @@
 /*
- * test_fx_arith.c - shifts, saturation, conversions, multiply, divide, reciprocal, accumulation.
+ * test_fx_arith.c - shifts, saturation, conversions, multiply, divide (int32 and int64 / uint32),
+ * reciprocal, accumulation.
  *
  * Every result here is exact math followed by one documented rounding, so the tests compare
  * with exact integer references (fx_test.h, written independently of firmware/fx) and require
@@ -304,6 +305,69 @@ static void test_divide(void)
     CHECK_EQ_INT(badodd, 0);
 }
 
+/* A random int64 with a random magnitude (2^0 .. 2^62) and sign. */
+static int64_t rand_i64(uint32_t *st)
+{
+    const uint64_t u = ((uint64_t)fxt_rand(st) << 32 | fxt_rand(st)) >> 2; /* [0, 2^62) */
+    const int64_t m = (int64_t)(u >> (fxt_rand(st) % 63u));
+    return (fxt_rand(st) & 1u) ? -m : m;
+}
+
+static void test_divide64(void)
+{
+    long k;
+    uint32_t st = 0x5EED64u;
+    unsigned long bad = 0, badodd = 0;
+    /* den == 0: saturated by the sign of num, as fx_div */
+    CHECK_EQ_INT(fx_div64(5, 0), INT32_MAX);
+    CHECK_EQ_INT(fx_div64(-5, 0), INT32_MIN);
+    CHECK_EQ_INT(fx_div64(0, 0), 0);
+    /* ties away from zero, both signs */
+    CHECK_EQ_INT(fx_div64(1, 2), 1);
+    CHECK_EQ_INT(fx_div64(-1, 2), -1);
+    CHECK_EQ_INT(fx_div64(5, 2), 3);
+    CHECK_EQ_INT(fx_div64(-5, 2), -3);
+    CHECK_EQ_INT(fx_div64(4, 3), 1);
+    CHECK_EQ_INT(fx_div64(-5, 3), -2);
+    CHECK_EQ_INT(fx_div64(-4, 3), -1);
+    /* an ADIS-style scaling: 8191 counts x 0.05 deg/s in Q16 = 8191 x 32768 / 10 */
+    CHECK_EQ_INT(fx_div64(8191LL * 32768, 10u), 26840269);
+    CHECK_EQ_INT(fx_div64(-8192LL * 32768, 10u), -26843546);
+    /* saturation at both ends, exactly at the limits, and the extreme inputs */
+    CHECK_EQ_INT(fx_div64(INT32_MAX, 1u), INT32_MAX);
+    CHECK_EQ_INT(fx_div64((int64_t)INT32_MAX + 1, 1u), INT32_MAX);
+    CHECK_EQ_INT(fx_div64(INT32_MIN, 1u), INT32_MIN);
+    CHECK_EQ_INT(fx_div64((int64_t)INT32_MIN - 1, 1u), INT32_MIN);
+    CHECK_EQ_INT(fx_div64(2 * (int64_t)INT32_MAX + 1, 2u), INT32_MAX); /* 2^31 - 0.5 -> 2^31 */
+    CHECK_EQ_INT(fx_div64(2 * (int64_t)INT32_MIN - 1, 2u), INT32_MIN); /* -2^31 - 0.5 */
+    CHECK_EQ_INT(fx_div64(INT64_MAX, 1u), INT32_MAX);
+    CHECK_EQ_INT(fx_div64(INT64_MIN, 1u), INT32_MIN);
+    CHECK_EQ_INT(fx_div64(INT64_MIN, UINT32_MAX), INT32_MIN);   /* -2147483648.5 */
+    CHECK_EQ_INT(fx_div64(INT64_MAX, UINT32_MAX), INT32_MAX);
+    CHECK_EQ_INT(fx_div64(INT64_MIN / 2, UINT32_MAX), -1073741824); /* -1073741824.25 */
+    CHECK_EQ_INT(fx_div64(3, UINT32_MAX), 0);
+    /* the same division as fx_sum_mean */
+    {
+        struct fx_sum acc;
+        int32_t m = 0;
+        acc.sum = -7 * (int64_t)FX_SUM_MAX_COUNT - (int64_t)FX_SUM_MAX_COUNT / 2;
+        acc.count = FX_SUM_MAX_COUNT;
+        CHECK_OK(fx_sum_mean(&acc, &m));
+        CHECK_EQ_INT(fx_div64(acc.sum, acc.count), m);
+        CHECK_EQ_INT(m, -8);
+    }
+    /* random numerators and denominators of every magnitude against the exact reference */
+    for (k = 0; k < N_RANDOM; k++) {
+        const int64_t num = rand_i64(&st);
+        const uint32_t den = (fxt_rand(&st) >> (fxt_rand(&st) % 32u)) | 1u;
+        const int32_t q = fx_div64(num, den);
+        if (q != fxt_sat(fxt_round_div(num, den))) bad++;
+        if (q != INT32_MIN && q != INT32_MAX && fx_div64(-num, den) != -q) badodd++;
+    }
+    CHECK_EQ_INT(bad, 0);
+    CHECK_EQ_INT(badodd, 0);
+}
+
 static void test_reciprocal(void)
 {
     int32_t r = 0;
@@ -441,6 +505,7 @@ int main(void)
     UNIT_RUN(test_rounding_shifts);
     UNIT_RUN(test_multiply);
     UNIT_RUN(test_divide);
+    UNIT_RUN(test_divide64);
     UNIT_RUN(test_reciprocal);
     UNIT_RUN(test_accumulate);
     return unit_report();

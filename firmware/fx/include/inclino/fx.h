@@ -231,6 +231,12 @@ static inline int fx_recip_q30(fx_q30_t x, fx_q30_t *r)
     return fx_div(FX_Q30_ONE, x, FX_Q30_SHIFT, r);
 }
 
+/* round(num / den) of an int64 by a uint32, ties away from zero, saturated to int32: scaling an
+ * exact int64 product by a rational constant (raw counts x LSB -> Q16, and back). Any num; den
+ * == 0 gives INT32_MAX for num > 0, INT32_MIN for num < 0 and 0 for 0 (as fx_div). |error| <= 0.5
+ * LSB when not saturated. The same division as fx_sum_mean. */
+int32_t fx_div64(int64_t num, uint32_t den);
+
 /* ---- Accumulation ------------------------------------------------------------------------- */
 
 /* Running sum of int32 samples (any one Q format) in int64. Up to FX_SUM_MAX_COUNT samples can
