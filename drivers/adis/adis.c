@@ -1,5 +1,7 @@
-/* adis.c - shared ADIS register protocol (see adis.h). */
+/* adis.c - shared ADIS register protocol and offset encoding (see adis.h). */
 #include "inclino/adis.h"
+
+#include "inclino/fx.h"
 
 static uint16_t read_cmd(uint8_t addr)
 {
@@ -83,4 +85,24 @@ uint16_t adis_field(uint16_t raw, unsigned bits)
         return 0;
     }
     return (uint16_t)((uint32_t)raw & ((1UL << bits) - 1UL));
+}
+
+int32_t adis_offset_counts(int64_t num, uint32_t den, unsigned bits, bool *saturated)
+{
+    int32_t c, lo, hi;
+    bool sat;
+    if (den == 0u || bits < 2u || bits > 16u) {
+        if (saturated != NULL) {
+            *saturated = true;
+        }
+        return 0;
+    }
+    hi = (int32_t)((1UL << (bits - 1u)) - 1UL);
+    lo = -hi - 1;
+    c = fx_div64(num, den); /* saturated to int32: still outside [lo, hi] when it was */
+    sat = c > hi || c < lo;
+    if (saturated != NULL) {
+        *saturated = sat;
+    }
+    return fx_clamp(c, lo, hi);
 }

@@ -18,7 +18,9 @@
 /*
  * n / d rounded to nearest, ties away from zero, for d > 0 and |n| < INT32_MAX - d/2. C
  * division truncates toward zero (defined since C99), so each sign is handled on its magnitude
- * and no negative value is ever shifted.
+ * and no negative value is ever shifted. 32-bit on purpose (not fx_div64): it runs per sample,
+ * and a 32-bit division is one instruction on the M3/M4 and rv32imac (__aeabi_idiv on the M0+)
+ * where a 64-bit one is a libgcc call on every core.
  */
 static int32_t div_round(int32_t n, int32_t d)
 {
@@ -72,33 +74,15 @@ int32_t adis16255_angle_deg_q16(uint16_t word)
     return n * 2400 + div_round(n * 160, 273);
 }
 
-/* |offset| beyond which the 12-bit GYRO_OFF saturates anyway (37.5 °/s): clamping the input
- * first keeps dps_q16 * 273 inside int32. */
-#define GYRO_OFF_CLAMP_Q16 (40 * 65536)
-
 int adis16255_gyro_off_from_dps_q16(int32_t dps_q16, uint16_t *word, bool *saturated)
 {
     int32_t n;
-    bool sat = false;
     if (word == NULL || saturated == NULL) {
         return INC_ERR_NULL;
     }
-    if (dps_q16 > GYRO_OFF_CLAMP_Q16) {
-        dps_q16 = GYRO_OFF_CLAMP_Q16;
-    } else if (dps_q16 < -GYRO_OFF_CLAMP_Q16) {
-        dps_q16 = -GYRO_OFF_CLAMP_Q16;
-    }
     /* [U] LSB 5/273 °/s: count = dps * 273 / 5 = dps_q16 * 273 / 327680. */
-    n = div_round(dps_q16 * 273, 327680);
-    if (n > 2047) {
-        n = 2047;
-        sat = true;
-    } else if (n < -2048) {
-        n = -2048;
-        sat = true;
-    }
+    n = adis_offset_counts((int64_t)dps_q16 * 273, 327680u, ADIS16255_GYRO_OFF_BITS, saturated);
     *word = (uint16_t)((uint32_t)n & 0x0FFFu);
-    *saturated = sat;
     return INC_OK;
 }
 

@@ -7,6 +7,8 @@
  */
 #include "inclino/adis_imu.h"
 
+#include "inclino/fx.h"
+
 /*
  * Per-variant facts. Waits: Linux's sw_reset_ms / self_test_ms (sensors.md §3.4) are the longest
  * figures any source gives for each part (OPTEC's ADIS16405 reset is 100/170 ms, the ADIS16367's
@@ -187,30 +189,10 @@ bool adis_imu_smpl_prd_is_low_power(uint8_t smpl_prd)
 /* ---- conversions ---- */
 
 /*
- * num / den rounded to nearest, ties away from zero, den > 0. C division truncates toward
- * zero, so work on the magnitude; nothing here shifts a negative value. Callers keep |num|
- * far below INT64_MAX (inputs are clamped first).
+ * Each conversion forms the exact rational as an int64 numerator over a uint32 denominator and
+ * lets fx_div64 round it (ties away from zero) and saturate it to int32.
+ * Inputs beyond any register width are clamped so the products below cannot overflow int64.
  */
-static int64_t div_round(int64_t num, int64_t den)
-{
-    if (num >= 0) {
-        return (num + den / 2) / den;
-    }
-    return -((-num + den / 2) / den);
-}
-
-static int32_t sat32(int64_t v)
-{
-    if (v > INT32_MAX) {
-        return INT32_MAX;
-    }
-    if (v < INT32_MIN) {
-        return INT32_MIN;
-    }
-    return (int32_t)v;
-}
-
-/* Inputs beyond any register width are clamped so the products below cannot overflow int64. */
 static int64_t clamp_counts(int32_t c)
 {
     if (c > 65535) {
@@ -225,14 +207,14 @@ static int64_t clamp_counts(int32_t c)
 int32_t adis_imu_gyro_dps_q16(int32_t counts, enum adis_imu_range range)
 {
     /* 0.05 deg/s x 65536 = 32768 / 10; the LSB halves with each smaller range (§3.3 [D]). */
-    int64_t den;
+    uint32_t den;
     switch (range) {
-    case ADIS_IMU_RANGE_300: den = 10; break;
-    case ADIS_IMU_RANGE_150: den = 20; break;
-    case ADIS_IMU_RANGE_75: den = 40; break;
+    case ADIS_IMU_RANGE_300: den = 10u; break;
+    case ADIS_IMU_RANGE_150: den = 20u; break;
+    case ADIS_IMU_RANGE_75: den = 40u; break;
     default: return 0;
     }
-    return sat32(div_round(clamp_counts(counts) * 32768, den));
+    return fx_div64(clamp_counts(counts) * 32768, den);
 }
 
 int32_t adis_imu_accel_g_q16(int32_t counts, uint32_t lsb_ug)
@@ -240,78 +222,63 @@ int32_t adis_imu_accel_g_q16(int32_t counts, uint32_t lsb_ug)
     if (lsb_ug == 0u || lsb_ug > 100000u) {
         return 0;
     }
-    return sat32(div_round(clamp_counts(counts) * (int64_t)lsb_ug * 65536, 1000000));
+    return fx_div64(clamp_counts(counts) * (int64_t)lsb_ug * 65536, 1000000u);
 }
 
 int32_t adis_imu_temp_c_q16(int32_t counts, enum adis_imu_family f)
 {
     /* In milli-deg C: 25000 + counts x 136 (1636x) or x 140 (1640x); 0 counts = 25 C (§3.3). */
     const int64_t mc_per_lsb = f == ADIS_IMU_FAMILY_1640X ? 140 : 136;
-    return sat32(div_round((25000 + clamp_counts(counts) * mc_per_lsb) * 65536, 1000));
+    return fx_div64((25000 + clamp_counts(counts) * mc_per_lsb) * 65536, 1000u);
 }
 
 int32_t adis_imu_supply_v_q16(int32_t counts)
 {
-    return sat32(div_round(clamp_counts(counts) * 2418 * 65536, 1000000)); /* 2.418 mV */
+    return fx_div64(clamp_counts(counts) * 2418 * 65536, 1000000u); /* 2.418 mV */
 }
 
 int32_t adis_imu_magn_gauss_q16(int32_t counts)
 {
-    return sat32(div_round(clamp_counts(counts) * 65536, 2000)); /* 0.5 mgauss */
+    return fx_div64(clamp_counts(counts) * 65536, 2000u); /* 0.5 mgauss */
 }
 
 int32_t adis_imu_aux_v_q16(int32_t counts)
 {
-    return sat32(div_round(clamp_counts(counts) * 8058 * 65536, 10000000)); /* 805.8 uV */
-}
-
-static int32_t saturate(int64_t v, int32_t lo, int32_t hi, bool *saturated)
-{
-    bool sat = false;
-    if (v > hi) {
-        v = hi;
-        sat = true;
-    } else if (v < lo) {
-        v = lo;
-        sat = true;
-    }
-    if (saturated != NULL) {
-        *saturated = sat;
-    }
-    return (int32_t)v;
+    return fx_div64(clamp_counts(counts) * 8058 * 65536, 10000000u); /* 805.8 uV */
 }
 
 int16_t adis_imu_gyro_off_from_dps_q16(int32_t dps_q16, bool *saturated)
 {
     /* x80 (seed 003: "multiply by 80, round"), from Q16.16. */
-    const int64_t c = div_round((int64_t)dps_q16 * ADIS_IMU_GYRO_OFF_PER_DPS, 65536);
-    return (int16_t)saturate(c, ADIS_IMU_GYRO_OFF_MIN, ADIS_IMU_GYRO_OFF_MAX, saturated);
+    return (int16_t)adis_offset_counts((int64_t)dps_q16 * ADIS_IMU_GYRO_OFF_PER_DPS, 65536u,
+                                       ADIS_IMU_GYRO_OFF_BITS, saturated);
 }
 
 int32_t adis_imu_gyro_off_to_dps_q16(int32_t counts)
 {
-    const int32_t c = saturate(counts, ADIS_IMU_GYRO_OFF_MIN, ADIS_IMU_GYRO_OFF_MAX, NULL);
-    return (int32_t)div_round((int64_t)c * 65536, ADIS_IMU_GYRO_OFF_PER_DPS);
+    const int32_t c = fx_clamp(counts, ADIS_IMU_GYRO_OFF_MIN, ADIS_IMU_GYRO_OFF_MAX);
+    return fx_div64((int64_t)c * 65536, (uint32_t)ADIS_IMU_GYRO_OFF_PER_DPS);
 }
 
 int16_t adis_imu_accel_off_from_g_q16(int32_t g_q16, uint32_t lsb_ug, bool *saturated)
 {
-    int64_t c;
     if (lsb_ug == 0u || lsb_ug > 100000u) {
         if (saturated != NULL) {
             *saturated = true;
         }
         return 0;
     }
-    c = div_round((int64_t)g_q16 * 1000000, (int64_t)lsb_ug * 65536);
-    return (int16_t)saturate(c, ADIS_IMU_ACCEL_OFF_MIN, ADIS_IMU_ACCEL_OFF_MAX, saturated);
+    /* g / (lsb_ug x 1e-6) = g_q16 x 1e6 / (lsb_ug x 65536) = g_q16 x 15625 / (lsb_ug x 1024):
+     * the same quotient, with a divisor that fits 32 bits. */
+    return (int16_t)adis_offset_counts((int64_t)g_q16 * 15625, lsb_ug * 1024u,
+                                       ADIS_IMU_ACCEL_OFF_BITS, saturated);
 }
 
 int32_t adis_imu_accel_off_to_g_q16(int32_t counts, uint32_t lsb_ug)
 {
-    const int32_t c = saturate(counts, ADIS_IMU_ACCEL_OFF_MIN, ADIS_IMU_ACCEL_OFF_MAX, NULL);
+    const int32_t c = fx_clamp(counts, ADIS_IMU_ACCEL_OFF_MIN, ADIS_IMU_ACCEL_OFF_MAX);
     if (lsb_ug == 0u || lsb_ug > 100000u) {
         return 0;
     }
-    return sat32(div_round((int64_t)c * (int64_t)lsb_ug * 65536, 1000000));
+    return fx_div64((int64_t)c * (int64_t)lsb_ug * 65536, 1000000u);
 }

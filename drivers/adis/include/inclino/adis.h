@@ -16,6 +16,7 @@
 #ifndef INCLINO_ADIS_H
 #define INCLINO_ADIS_H
 
+#include <stdbool.h>
 #include <stddef.h>
 #include <stdint.h>
 
@@ -57,6 +58,19 @@ int32_t adis_sign_extend(uint16_t raw, unsigned bits);
 
 /* The unsigned value of the low `bits` bits of a register. bits in 1..16. */
 uint16_t adis_field(uint16_t raw, unsigned bits);
+
+/*
+ * The count to write to a user-offset register (ADIS16255 GYRO_OFF, ADIS1636x/1640x XGYRO_OFF
+ * and XACCL_OFF): round(num / den), ties away from zero, saturated to the register's two's
+ * complement range [-2^(bits-1), 2^(bits-1) - 1]. The caller forms num / den exactly: num = the
+ * offset in its fixed-point format x the register's LSB per unit (numerator), exact in int64;
+ * den = the format's scale x the denominator, e.g. Q16.16 deg/s at 80 LSB per deg/s is
+ * (dps_q16 * 80) / 65536. Any num. *saturated (may be NULL) is set when the rounded quotient
+ * lies outside the register's range (the result is then the nearest end), cleared otherwise.
+ * |error| <= 0.5 LSB when not saturated. den == 0 or bits outside 2..16: 0, *saturated set.
+ * Returns the count (the caller masks it to the register's width).
+ */
+int32_t adis_offset_counts(int64_t num, uint32_t den, unsigned bits, bool *saturated);
 
 #ifdef __cplusplus
 }
