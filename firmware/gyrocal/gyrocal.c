@@ -9,7 +9,7 @@
  *
  * Arithmetic: the manual mode keeps exact int64 sums of the output counts. With k = 80 x LSB
  * offset counts per output count (4, 2, 1 at +-300, 150, 75 deg/s), 80 x mean deg/s = k S / N,
- * rounded once (ties away from zero, fx_sum_mean). The processor-side correction is 4 k S / N in
+ * rounded once (ties away from zero, fx_div64). The processor-side correction is 4 k S / N in
  * 1/320 deg/s. Nothing is converted through an intermediate rounded mean.
  */
 #include "inclino/gyrocal.h"
@@ -265,21 +265,10 @@ static void sums_add(struct sums *a, const struct adis_imu_sample *smp)
     a->n++;
 }
 
-/* round(num / den), ties away from zero, for |num / den| < 2^31 and 1 <= den <= 2^31. */
-static int32_t div_round(int64_t num, uint32_t den)
-{
-    struct fx_sum t;
-    int32_t q = 0;
-    t.sum = num;
-    t.count = den;
-    (void)fx_sum_mean(&t, &q);
-    return q;
-}
-
 /* Mean output of axis i in deg/s Q16.16: S k / (80 N) x 65536 = S k 4096 / (5 N), rounded. */
 static int32_t mean_q16(const struct sums *a, unsigned i, unsigned k)
 {
-    return div_round(a->s[i] * (int64_t)k * 4096, 5u * a->n);
+    return fx_div64(a->s[i] * (int64_t)k * 4096, 5u * a->n);
 }
 
 /*
@@ -303,7 +292,7 @@ static int32_t se_q16(const struct sums *a, unsigned i, unsigned k, uint32_t tap
     v32 = (v16 << 16) / n;           /* variance of the mean, counts^2 Q32 (<= 2^58) */
     /* / g: gnum <= 3 * 2^18; multiply first while it cannot overflow, else divide first */
     v32 = v32 < ((uint64_t)1 << 43) ? v32 * gnum / gden : v32 / gden * gnum;
-    return div_round((int64_t)fx_isqrt64(v32) * (int64_t)k, 80u); /* counts Q16 -> deg/s Q16 */
+    return fx_div64((int64_t)fx_isqrt64(v32) * (int64_t)k, 80u); /* counts Q16 -> deg/s Q16 */
 }
 
 /* sqrt(a^2 + b^2) for Q16 magnitudes < 2^24. */
@@ -704,8 +693,8 @@ int gyrocal_run(struct gyrocal *g, enum gyrocal_mode mode, struct gyrocal_result
     /* New offsets / correction and the residual estimate. */
     if (mode == GYROCAL_MANUAL) {
         for (i = 0; i < 3u; i++) {
-            const int32_t d = -div_round(a.s[i] * (int64_t)k, a.n);          /* -80 x mean */
-            const int32_t total = -div_round(a.s[i] * (int64_t)(4u * k), a.n); /* -320 x mean */
+            const int32_t d = -fx_div64(a.s[i] * (int64_t)k, a.n);          /* -80 x mean */
+            const int32_t total = -fx_div64(a.s[i] * (int64_t)(4u * k), a.n); /* -320 x mean */
             int32_t fine = total;
             int32_t se;
             res->mean_q16[i] = mean_q16(&a, i, k);
