@@ -65,18 +65,17 @@ int sca3000_accel_to_ug(int32_t counts, enum sca3000_variant v, int32_t *ug)
 
 int sca3000_accel_to_q16_g(int32_t counts, enum sca3000_variant v, int32_t *g_q16)
 {
-    const uint32_t lsb = sca3000_ug_per_lsb(v);
+    int32_t ug;
+    int err;
     if (g_q16 == NULL) {
         return INC_ERR_NULL;
     }
-    if (lsb == 0u) {
-        return INC_ERR_INVAL;
+    err = sca3000_accel_to_ug(counts, v, &ug); /* the same checks; ug is exact */
+    if (err != INC_OK) {
+        return err;
     }
-    if (counts < -4096 || counts > 4095) {
-        return INC_ERR_RANGE;
-    }
-    /* |counts * lsb * 65536| <= 4096 * 6250 * 65536 = 1.7e12: exact in int64. */
-    *g_q16 = fx_div64((int64_t)counts * (int64_t)lsb * 65536, 1000000u);
+    /* |ug * 65536| <= 4096 * 6250 * 65536 = 1.7e12: exact in int64. */
+    *g_q16 = fx_div64((int64_t)ug * 65536, 1000000u);
     return INC_OK;
 }
 
