@@ -597,48 +597,36 @@ int adis16255_wait_sample(struct adis16255 *st, uint32_t timeout_us, struct adis
     return err;
 }
 
-/* One output register with the sample checks; *out = 0 on error. */
-static int read_output(struct adis16255 *st, uint8_t addr, uint16_t *word)
+/* One output register with the sample checks, converted by conv; *out = 0 on error. */
+static int read_output(struct adis16255 *st, uint8_t addr, int32_t (*conv)(uint16_t), int32_t *out)
 {
-    int err = check_ready(st);
-    if (err != INC_OK) {
-        return err;
+    uint16_t w;
+    int err;
+    if (out == NULL) {
+        return INC_ERR_NULL;
     }
-    err = adis_read_reg(&st->dev, addr, word);
-    if (err != INC_OK) {
-        return err;
+    *out = 0;
+    err = check_ready(st);
+    if (err == INC_OK) {
+        err = adis_read_reg(&st->dev, addr, &w);
     }
-    return check_outputs(st, word, 1u, NULL);
+    if (err == INC_OK) {
+        err = check_outputs(st, &w, 1u, NULL);
+    }
+    if (err == INC_OK) {
+        *out = conv(w);
+    }
+    return err;
 }
 
 int adis16255_read_supply(struct adis16255 *st, int32_t *v_q16)
 {
-    uint16_t w;
-    int err;
-    if (v_q16 == NULL) {
-        return INC_ERR_NULL;
-    }
-    *v_q16 = 0;
-    err = read_output(st, ADIS16255_REG_SUPPLY_OUT, &w);
-    if (err == INC_OK) {
-        *v_q16 = adis16255_supply_v_q16(w);
-    }
-    return err;
+    return read_output(st, ADIS16255_REG_SUPPLY_OUT, adis16255_supply_v_q16, v_q16);
 }
 
 int adis16255_read_angle(struct adis16255 *st, int32_t *deg_q16)
 {
-    uint16_t w;
-    int err;
-    if (deg_q16 == NULL) {
-        return INC_ERR_NULL;
-    }
-    *deg_q16 = 0;
-    err = read_output(st, ADIS16255_REG_ANGL_OUT, &w);
-    if (err == INC_OK) {
-        *deg_q16 = adis16255_angle_deg_q16(w);
-    }
-    return err;
+    return read_output(st, ADIS16255_REG_ANGL_OUT, adis16255_angle_deg_q16, deg_q16);
 }
 
 int adis16255_read_status(struct adis16255 *st, struct adis16255_status *out)
