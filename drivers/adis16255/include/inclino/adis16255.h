@@ -309,12 +309,13 @@ const char *adis16255_status_bit_name(unsigned bit);
 /*
  * Bring the part up: validate cfg (INC_ERR_NULL/INC_ERR_INVAL), bind the SPI device (slow SCLK
  * until the sample rate is known), optional software reset, identity plausibility (one
- * pipelined read of SUPPLY_OUT, GYRO_SCALE, SENS_AVG, SMPL_PRD, MSC_CTRL, STATUS, ENDURANCE):
- * INC_ERR_BUS for all-ones/all-zeros (no device, MISO stuck), INC_ERR_ID for implausible
- * contents (st->id_check says which); write SMPL_PRD, SENS_AVG, MSC_CTRL and read them back
- * (INC_ERR_ID on mismatch); select SCLK/stall for the rate; read STATUS (latched bits clear),
- * then again: any bit set -> INC_ERR_DEVICE with st->status; optional self-test; attach the
- * data-ready interrupt. On error st is not usable (every other call returns INC_ERR_STATE).
+ * pipelined read of SUPPLY_OUT, GYRO_SCALE, SENS_AVG, SMPL_PRD, MSC_CTRL, then STATUS on its
+ * own, which clears its latched bits): INC_ERR_BUS for all-ones/all-zeros (no device, MISO
+ * stuck), INC_ERR_ID for implausible contents (st->id_check says which); write SMPL_PRD,
+ * SENS_AVG, MSC_CTRL and read them back (INC_ERR_ID on mismatch); select SCLK/stall for the
+ * rate; optional self-test (else the pending outputs are discarded); read STATUS again: any bit
+ * set -> INC_ERR_DEVICE with st->status; attach the data-ready interrupt. On error st is not
+ * usable (every other call returns INC_ERR_STATE). docs/drivers-adis16255.md, Init.
  */
 int adis16255_init(struct adis16255 *st, const struct adis16255_cfg *cfg);
 
