@@ -673,25 +673,33 @@ int adis16255_set_sample_period(struct adis16255 *st, uint8_t smpl_prd)
     return err;
 }
 
+/* Once the part answers, write a 16-bit register and read it back: INC_ERR_ID on a mismatch. */
+static int write_verified(struct adis16255 *st, uint8_t addr, uint16_t word)
+{
+    uint16_t v;
+    int err = wait_ready(st);
+    if (err == INC_OK) {
+        err = adis_write_reg(&st->dev, addr, word);
+    }
+    if (err == INC_OK) {
+        err = adis_read_reg(&st->dev, addr, &v);
+    }
+    if (err == INC_OK && v != word) {
+        err = INC_ERR_ID;
+    }
+    return err;
+}
+
 int adis16255_set_sens_avg(struct adis16255 *st, enum adis16255_range range, uint8_t filter_m)
 {
-    uint16_t word = 0, v;
+    uint16_t word = 0;
     int err = check_ready(st);
     if (err != INC_OK) {
         return err;
     }
     err = adis16255_sens_avg_encode(range, filter_m, &word);
     if (err == INC_OK) {
-        err = wait_ready(st);
-    }
-    if (err == INC_OK) {
-        err = adis_write_reg(&st->dev, ADIS16255_REG_SENS_AVG, word);
-    }
-    if (err == INC_OK) {
-        err = adis_read_reg(&st->dev, ADIS16255_REG_SENS_AVG, &v);
-    }
-    if (err == INC_OK && v != word) {
-        err = INC_ERR_ID;
+        err = write_verified(st, ADIS16255_REG_SENS_AVG, word);
     }
     if (err == INC_OK) {
         st->sens_avg = word;
@@ -705,7 +713,7 @@ int adis16255_set_sens_avg(struct adis16255 *st, enum adis16255_range range, uin
 
 int adis16255_set_gyro_offset(struct adis16255 *st, int32_t dps_q16, bool *saturated)
 {
-    uint16_t word = 0, v;
+    uint16_t word = 0;
     bool sat = false;
     int err = check_ready(st);
     if (err != INC_OK) {
@@ -715,17 +723,7 @@ int adis16255_set_gyro_offset(struct adis16255 *st, int32_t dps_q16, bool *satur
     if (saturated != NULL) {
         *saturated = sat;
     }
-    err = wait_ready(st);
-    if (err == INC_OK) {
-        err = adis_write_reg(&st->dev, ADIS16255_REG_GYRO_OFF, word);
-    }
-    if (err == INC_OK) {
-        err = adis_read_reg(&st->dev, ADIS16255_REG_GYRO_OFF, &v);
-    }
-    if (err == INC_OK && v != word) {
-        err = INC_ERR_ID;
-    }
-    return err;
+    return write_verified(st, ADIS16255_REG_GYRO_OFF, word);
 }
 
 int adis16255_get_gyro_offset(struct adis16255 *st, int32_t *dps_q16)
