@@ -5,18 +5,12 @@
 # Prints a markdown table for docs/benchmarks.md. Needs valgrind (fails if it is missing).
 set -eu
 bin="${1:?usage: bench_avg.sh <host build dir>}/tests/avg/bench_avg"
-command -v valgrind >/dev/null || { echo "valgrind not found" >&2; exit 1; }
-[ -x "$bin" ] || { echo "$bin not built" >&2; exit 1; }
+count="$(dirname "$0")/../../cmake/scripts/callgrind_count.sh"
 n=100000
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
 echo "| filter | configuration | function | instructions / sample |"
 echo "|---|---|---|---:|"
 while read -r case fn what; do
-    valgrind --tool=callgrind --collect-atstart=no --toggle-collect="$fn" \
-        --callgrind-out-file="$tmp/cg.out" "$bin" "$case" >/dev/null 2>"$tmp/log"
-    total=$(sed -n 's/.*Collected : *\([0-9]*\).*/\1/p' "$tmp/log")
-    [ -n "$total" ] || { cat "$tmp/log" >&2; exit 1; }
+    total=$("$count" "$fn" "$bin" "$case")
     awk -v c="$case" -v f="$fn" -v w="$what" -v t="$total" -v n="$n" \
         'BEGIN { gsub(/_/, " ", w); printf "| %s | %s | %s | %.1f |\n", c, w, f, t / n }'
 done <<LIST

@@ -5,18 +5,12 @@
 # Prints a markdown table for docs/benchmarks.md (Calibration). Needs valgrind.
 set -eu
 bin="${1:?usage: bench_cal.sh <host build dir>}/tests/cal/bench_cal"
-command -v valgrind >/dev/null || { echo "valgrind not found" >&2; exit 1; }
-[ -x "$bin" ] || { echo "$bin not built" >&2; exit 1; }
+count="$(dirname "$0")/../../cmake/scripts/callgrind_count.sh"
 n=100000
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
 echo "| function | case | instructions / call |"
 echo "|---|---|---:|"
 while read -r fn case; do
-    valgrind --tool=callgrind --collect-atstart=no --toggle-collect="$fn" \
-        --callgrind-out-file="$tmp/cg.out" "$bin" "$case" >/dev/null 2>"$tmp/log"
-    total=$(sed -n 's/.*Collected : *\([0-9]*\).*/\1/p' "$tmp/log")
-    [ -n "$total" ] || { cat "$tmp/log" >&2; exit 1; }
+    total=$("$count" "$fn" "$bin" "$case")
     awk -v f="$fn" -v c="$case" -v t="$total" -v n="$n" 'BEGIN { printf "| %s | %s | %.1f |\n", f, c, t / n }'
 done <<LIST
 cal_acc_apply acc_apply

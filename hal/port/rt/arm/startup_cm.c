@@ -83,25 +83,6 @@ __attribute__((used, section(".isr_vector"))) const struct rt_vector_table rt_ve
     },
 };
 
-__attribute__((weak)) void rt_init_hook(void)
-{
-}
-
-__attribute__((weak)) void rt_exit_hook(int status)
-{
-    (void)status;
-    for (;;) {
-        __asm volatile("wfi");
-    }
-}
-
-__attribute__((weak)) void rt_fault(uint32_t cause, uintptr_t fault_sp)
-{
-    (void)cause;
-    (void)fault_sp;
-    for (;;) {
-    }
-}
 
 void Reset_Handler(void)
 {

@@ -1,5 +1,5 @@
 /*
- * rt_hooks.c - default (weak) hooks of the rv32 startup (crt0.S); see rt.h.
+ * rt_irq.c - the default (weak) interrupt entry of the rv32 startup (crt0.S); see rt.h.
  */
 #include <stdint.h>
 
@@ -7,26 +7,6 @@
 
 /* An interrupt arrived (mcause with bit 31 set); a HAL or platform port defines this. */
 void rt_irq_handler(uint32_t mcause);
-
-__attribute__((weak)) void rt_init_hook(void)
-{
-}
-
-__attribute__((weak)) void rt_exit_hook(int status)
-{
-    (void)status;
-    for (;;) {
-        __asm volatile("wfi");
-    }
-}
-
-__attribute__((weak)) void rt_fault(uint32_t cause, uintptr_t fault_sp)
-{
-    (void)cause;
-    (void)fault_sp;
-    for (;;) {
-    }
-}
 
 /*
  * No port claimed interrupts but one was enabled and taken: that is a fault too (returning would
