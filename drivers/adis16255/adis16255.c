@@ -279,9 +279,7 @@ static int check_outputs(struct adis16255 *st, const uint16_t *w, size_t n,
 /* Drop data-ready edges seen so far (after a procedure that disturbed the outputs). */
 static void dr_sync(struct adis16255 *st)
 {
-    const uint32_t key = hal_crit_enter(st->cfg.hal);
-    st->dr_taken = st->dr_count;
-    hal_crit_exit(st->cfg.hal, key);
+    adis_dr_sync(st->cfg.hal, &st->dr);
 }
 
 /* Clear ND of the sample registers so the next valid sample is a fresh one. */
@@ -395,12 +393,6 @@ static int check_cfg(const struct adis16255_cfg *cfg, uint16_t *sens_avg)
     return adis16255_sens_avg_encode(cfg->range, cfg->filter_m, sens_avg);
 }
 
-static void dr_isr(void *arg)
-{
-    struct adis16255 *st = arg;
-    st->dr_count = st->dr_count + 1u;
-}
-
 static int send_reset(struct adis16255 *st)
 {
     int err = adis_write_byte(&st->dev, ADIS16255_REG_COMMAND, ADIS16255_CMD_RESET);
@@ -421,8 +413,7 @@ int adis16255_init(struct adis16255 *st, const struct adis16255_cfg *cfg)
     st->dr_attached = false;
     st->id_check = ADIS16255_ID_OK;
     st->busy_until_ns = 0;
-    st->dr_count = 0;
-    st->dr_taken = 0;
+    adis_dr_reset(&st->dr);
     st->status.raw = 0;
     err = check_cfg(cfg, &sens_avg);
     if (err != INC_OK) {
@@ -476,7 +467,7 @@ int adis16255_init(struct adis16255 *st, const struct adis16255_cfg *cfg)
     }
     if (err == INC_OK && cfg->dr_pin != HAL_PIN_NONE) {
         err = hal_irq_attach(cfg->hal, cfg->dr_pin,
-                             cfg->dr_active_high ? HAL_EDGE_RISING : HAL_EDGE_FALLING, dr_isr, st);
+                             cfg->dr_active_high ? HAL_EDGE_RISING : HAL_EDGE_FALLING, adis_dr_isr, &st->dr);
         st->dr_attached = err == INC_OK;
         dr_sync(st);
     }
@@ -570,25 +561,9 @@ int adis16255_wait_sample(struct adis16255 *st, uint32_t timeout_us, struct adis
         timeout_us = adis16255_dr_timeout_us(st);
     }
     deadline = now(st) + (uint64_t)timeout_us * NS_PER_US;
-    for (;;) {
-        const uint32_t key = hal_crit_enter(st->cfg.hal);
-        pending = st->dr_count - st->dr_taken;
-        st->dr_taken = st->dr_count;
-        hal_crit_exit(st->cfg.hal, key);
-        if (pending != 0u) {
-            break;
-        }
-        /* A wake-up may come from another part's interrupt: loop until ours or the deadline. */
-        if (hal_irq_wait(st->cfg.hal, deadline) == INC_ERR_TIMEOUT || now(st) >= deadline) {
-            const uint32_t k2 = hal_crit_enter(st->cfg.hal);
-            pending = st->dr_count - st->dr_taken;
-            st->dr_taken = st->dr_count;
-            hal_crit_exit(st->cfg.hal, k2);
-            if (pending != 0u) {
-                break;
-            }
-            return INC_ERR_TIMEOUT; /* missed data-ready: no sample is made up */
-        }
+    err = adis_dr_wait(st->cfg.hal, &st->dr, deadline, &pending);
+    if (err != INC_OK) {
+        return err; /* missed data-ready: no sample is made up */
     }
     err = adis16255_read_sample(st, s);
     if (pending > 1u) {

@@ -85,12 +85,6 @@ static void start_busy(struct adis_imu *s, uint32_t ms)
 
 /* ---- data-ready ---- */
 
-static void dr_isr(void *arg)
-{
-    struct adis_imu *s = arg;
-    s->dr_count++;
-}
-
 static int write_dr(struct adis_imu *s, bool enable, enum adis_imu_dr_line line, bool active_low)
 {
     uint16_t msc = (uint16_t)(s->msc_ctrl & ~(ADIS_IMU_MSC_DR_EN | ADIS_IMU_MSC_DR_POL_HIGH |
@@ -848,7 +842,6 @@ int adis_imu_dr_config(struct adis_imu *s, bool enable, enum adis_imu_dr_line li
                        bool active_low)
 {
     const struct hal *hal;
-    uint32_t key;
     int err = check_ready(s);
     if (err != INC_OK) {
         return err;
@@ -870,14 +863,12 @@ int adis_imu_dr_config(struct adis_imu *s, bool enable, enum adis_imu_dr_line li
     }
     if (s->cfg.dr_pin != HAL_PIN_NONE) {
         err = hal_irq_attach(hal, s->cfg.dr_pin, active_low ? HAL_EDGE_FALLING : HAL_EDGE_RISING,
-                             enable ? dr_isr : NULL, s);
+                             enable ? adis_dr_isr : NULL, &s->dr);
         if (err != INC_OK) {
             return err;
         }
     }
-    key = hal_crit_enter(hal);
-    s->dr_taken = s->dr_count;
-    hal_crit_exit(hal, key);
+    adis_dr_sync(hal, &s->dr);
     s->dr_enabled = enable;
     s->dr_line = (uint8_t)line;
     s->dr_active_low = active_low;
@@ -888,6 +879,7 @@ int adis_imu_wait_dr(struct adis_imu *s, uint32_t timeout_ns, uint32_t *missed)
 {
     const struct hal *hal;
     uint64_t deadline;
+    uint32_t pending = 0;
     int err = enter(s);
     if (err != INC_OK) {
         return err;
@@ -900,37 +892,23 @@ int adis_imu_wait_dr(struct adis_imu *s, uint32_t timeout_ns, uint32_t *missed)
         timeout_ns = 3u * adis_imu_current_period_ns(s);
     }
     deadline = hal_now_ns(hal) + timeout_ns;
-    for (;;) {
-        const uint32_t key = hal_crit_enter(hal);
-        const uint32_t c = s->dr_count;
-        hal_crit_exit(hal, key);
-        if (c != s->dr_taken) {
-            if (missed != NULL) {
-                *missed = c - s->dr_taken - 1u;
-            }
-            s->dr_taken = c;
-            return INC_OK;
-        }
-        if (hal_now_ns(hal) >= deadline) {
-            s->timeouts++;
-            return INC_ERR_TIMEOUT;
-        }
-        /* Returns at any attached interrupt (maybe another driver's) or at the deadline: the
-         * loop looks again either way. */
-        (void)hal_irq_wait(hal, deadline);
+    err = adis_dr_wait(hal, &s->dr, deadline, &pending);
+    if (err == INC_ERR_TIMEOUT) {
+        s->timeouts++;
     }
+    if (err == INC_OK && missed != NULL) {
+        *missed = pending - 1u;
+    }
+    return err;
 }
 
 int adis_imu_dr_flush(struct adis_imu *s)
 {
-    uint32_t key;
     int err = check_ready(s);
     if (err != INC_OK) {
         return err;
     }
-    key = hal_crit_enter(s->cfg.hal);
-    s->dr_taken = s->dr_count;
-    hal_crit_exit(s->cfg.hal, key);
+    adis_dr_sync(s->cfg.hal, &s->dr);
     return INC_OK;
 }
 

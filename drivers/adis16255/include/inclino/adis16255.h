@@ -26,6 +26,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "inclino/adis.h"
 #include "inclino/error.h"
 #include "inclino/hal.h"
 #include "inclino/spi.h"
@@ -233,8 +234,7 @@ struct adis16255 {
     uint16_t msc_ctrl;
     bool fast;                    /* SCLK/stall for >= 64 SPS in use */
     uint64_t busy_until_ns;       /* the part is busy with a command the driver issued */
-    volatile uint32_t dr_count;   /* data-ready edges (interrupt context) */
-    uint32_t dr_taken;            /* edges consumed by adis16255_wait_sample */
+    struct adis_dr dr;            /* data-ready edges seen and consumed (wait_sample) */
     bool dr_attached;
     bool initialised;
     enum adis16255_id_check id_check; /* the identity check that failed at init */
