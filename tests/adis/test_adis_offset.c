@@ -22,15 +22,6 @@ static int64_t ref_round(int64_t n, int64_t d)
     return q;
 }
 
-static uint32_t rnd(uint32_t *s)
-{
-    uint32_t x = *s;
-    x ^= x << 13;
-    x ^= x >> 17;
-    x ^= x << 5;
-    return *s = x;
-}
-
 static void test_registers(void)
 {
     bool sat = true;
@@ -107,11 +98,11 @@ static void test_random(void)
     long k;
     for (k = 0; k < UNIT_SIZE(1000000L, 100000L); k++) {
         /* |num| < 2^62, den 1 .. 2^32 - 1, bits 2..16, every magnitude */
-        const uint64_t u = ((uint64_t)rnd(&s) << 32 | rnd(&s)) >> 2;
-        const int64_t m = (int64_t)(u >> (rnd(&s) % 63u));
-        const int64_t num = (rnd(&s) & 1u) ? -m : m;
-        const uint32_t den = (rnd(&s) >> (rnd(&s) % 32u)) | 1u;
-        const unsigned bits = 2u + rnd(&s) % 15u;
+        const uint64_t u = ((uint64_t)unit_rand32(&s) << 32 | unit_rand32(&s)) >> 2;
+        const int64_t m = (int64_t)(u >> (unit_rand32(&s) % 63u));
+        const int64_t num = (unit_rand32(&s) & 1u) ? -m : m;
+        const uint32_t den = (unit_rand32(&s) >> (unit_rand32(&s) % 32u)) | 1u;
+        const unsigned bits = 2u + unit_rand32(&s) % 15u;
         const int64_t hi = ((int64_t)1 << (bits - 1u)) - 1, lo = -hi - 1;
         const int64_t q = ref_round(num, den);
         const int64_t want = q > hi ? hi : (q < lo ? lo : q);

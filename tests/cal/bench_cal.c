@@ -15,6 +15,7 @@
 
 #include "inclino/cal.h"
 #include "golden_record_a.h"
+#include "unit.h"
 
 #ifdef BENCH_CM
 #define BENCH_N 256
@@ -30,18 +31,9 @@ static struct cal_gyro gyro;
 static struct calrec_tmodel models[5];
 static volatile int32_t sink;
 
-static uint32_t rnd(uint32_t *s)
-{
-    uint32_t x = *s;
-    x ^= x << 13;
-    x ^= x >> 17;
-    x ^= x << 5;
-    return *s = x;
-}
-
 static int32_t range(uint32_t *s, int32_t lo, int32_t hi)
 {
-    return lo + (int32_t)(rnd(s) % (uint32_t)(hi - lo + 1));
+    return lo + (int32_t)(unit_rand32(s) % (uint32_t)(hi - lo + 1));
 }
 
 static int prepare(void)

@@ -10,23 +10,13 @@
 #include <string.h>
 
 #include "inclino/cal.h"
-
-/* xorshift32: the same sequence on every target. */
-static inline uint32_t calt_rand(uint32_t *s)
-{
-    uint32_t x = *s;
-    x ^= x << 13;
-    x ^= x >> 17;
-    x ^= x << 5;
-    *s = x;
-    return x;
-}
+#include "unit.h"
 
 /* Uniform integer in [lo, hi] (hi - lo < 2^32). */
 static inline int64_t calt_range(uint32_t *s, int64_t lo, int64_t hi)
 {
     const uint64_t span = (uint64_t)(hi - lo) + 1u;
-    const uint64_t r = ((uint64_t)calt_rand(s) << 32) | calt_rand(s);
+    const uint64_t r = ((uint64_t)unit_rand32(s) << 32) | unit_rand32(s);
     return lo + (int64_t)(r % span);
 }
 
@@ -39,7 +29,7 @@ static inline void random_model(uint32_t *s, int32_t kind, int32_t ylim, unsigne
     memset(m, 0, sizeof *m);
     m->kind = kind;
     for (i = 0; i < CALREC_TM_PARAMS; i++) {
-        m->p[i] = extreme ? ((calt_rand(s) & 1u) ? ylim : -ylim) : (int32_t)calt_range(s, -ylim, ylim);
+        m->p[i] = extreme ? ((unit_rand32(s) & 1u) ? ylim : -ylim) : (int32_t)calt_range(s, -ylim, ylim);
     }
     switch (kind) {
     case CALREC_TM_LINEAR:
@@ -90,14 +80,14 @@ static inline void random_record(uint32_t *s, int extreme, unsigned k, struct ca
         r->acc_gain[a] = (int32_t)calt_range(s, 1020054733, 1127428915);    /* 0.95..1.05 */
         for (j = 0; j < 3u; j++) {
             r->acc_misalign[a][j] = a == j ? (int32_t)calt_range(s, 1052266987, 1095216660)
-                                  : (int32_t)(extreme ? ((calt_rand(s) & 1u) ? CALREC_LIM_MISALIGN_OFFDIAG : -CALREC_LIM_MISALIGN_OFFDIAG)
+                                  : (int32_t)(extreme ? ((unit_rand32(s) & 1u) ? CALREC_LIM_MISALIGN_OFFDIAG : -CALREC_LIM_MISALIGN_OFFDIAG)
                                                       : calt_range(s, -21474836, 21474836)); /* 0.02 */
         }
         if (extreme) {
             r->acc_nonlin[a][0] = (int32_t)calt_range(s, -CALREC_LIM_NONLIN_C01, CALREC_LIM_NONLIN_C01);
             r->acc_nonlin[a][1] = (int32_t)calt_range(s, -CALREC_LIM_NONLIN_C01, CALREC_LIM_NONLIN_C01);
-            r->acc_nonlin[a][2] = (calt_rand(s) & 1u) ? CALREC_LIM_NONLIN_C23 : -CALREC_LIM_NONLIN_C23;
-            r->acc_nonlin[a][3] = (calt_rand(s) & 1u) ? CALREC_LIM_NONLIN_C23 : -CALREC_LIM_NONLIN_C23;
+            r->acc_nonlin[a][2] = (unit_rand32(s) & 1u) ? CALREC_LIM_NONLIN_C23 : -CALREC_LIM_NONLIN_C23;
+            r->acc_nonlin[a][3] = (unit_rand32(s) & 1u) ? CALREC_LIM_NONLIN_C23 : -CALREC_LIM_NONLIN_C23;
         } else {
             r->acc_nonlin[a][2] = (int32_t)calt_range(s, -53687091, 53687091); /* 0.05 */
             r->acc_nonlin[a][3] = (int32_t)calt_range(s, -53687091, 53687091);

@@ -11,6 +11,7 @@
 #include <string.h>
 
 #include "inclino/fx.h"
+#include "unit.h"
 
 #define BENCH_N 100000
 
@@ -19,15 +20,6 @@ static uint32_t in_u32[BENCH_N];
 static uint64_t in_u64[BENCH_N];
 static volatile int64_t sink;
 static struct fx_sum acc;
-
-static uint32_t rnd(uint32_t *s)
-{
-    uint32_t x = *s;
-    x ^= x << 13;
-    x ^= x >> 17;
-    x ^= x << 5;
-    return *s = x;
-}
 
 static int32_t i32(uint32_t u)
 {
@@ -40,13 +32,13 @@ static void prepare(void)
     int i;
     for (i = 0; i < BENCH_N; i++) {
         /* a, b: random values with random magnitudes */
-        in_a[i] = fx_asr32(i32(rnd(&s)), rnd(&s) % 24u);
-        in_b[i] = fx_asr32(i32(rnd(&s)), rnd(&s) % 24u) | 1;
-        in_u32[i] = rnd(&s);
-        in_u64[i] = ((uint64_t)rnd(&s) << 32) | rnd(&s);
-        in_deg[i] = fx_asr32(i32(rnd(&s)), 6);              /* about +-360 deg in Q16 */
-        in_ratio[i] = fx_asr32(i32(rnd(&s)), 1);            /* [-1, 1) in Q30 */
-        in_acc[i] = fx_asr32(i32(rnd(&s)), 14);             /* +-2 g in Q16 */
+        in_a[i] = fx_asr32(i32(unit_rand32(&s)), unit_rand32(&s) % 24u);
+        in_b[i] = fx_asr32(i32(unit_rand32(&s)), unit_rand32(&s) % 24u) | 1;
+        in_u32[i] = unit_rand32(&s);
+        in_u64[i] = ((uint64_t)unit_rand32(&s) << 32) | unit_rand32(&s);
+        in_deg[i] = fx_asr32(i32(unit_rand32(&s)), 6);              /* about +-360 deg in Q16 */
+        in_ratio[i] = fx_asr32(i32(unit_rand32(&s)), 1);            /* [-1, 1) in Q30 */
+        in_acc[i] = fx_asr32(i32(unit_rand32(&s)), 14);             /* +-2 g in Q16 */
         acc.sum += in_a[i]; /* filled directly: fx_sum_add is itself measured */
     }
     acc.count = BENCH_N;

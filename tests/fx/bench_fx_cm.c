@@ -12,6 +12,7 @@
 #include <stdio.h>
 
 #include "inclino/fx.h"
+#include "unit.h"
 
 #define BENCH_CM_N 256
 #define SYST_CSR (*(volatile uint32_t *)0xE000E010u)
@@ -23,15 +24,6 @@ static int32_t in_acc[BENCH_CM_N], in_pos[BENCH_CM_N], in_rpos[BENCH_CM_N];
 static int32_t in_acc2[BENCH_CM_N];
 static uint32_t in_u32[BENCH_CM_N];
 static volatile int32_t sink;
-
-static uint32_t rnd(uint32_t *s)
-{
-    uint32_t x = *s;
-    x ^= x << 13;
-    x ^= x >> 17;
-    x ^= x << 5;
-    return *s = x;
-}
 
 static int32_t i32(uint32_t u)
 {
@@ -106,12 +98,12 @@ int main(void)
     uint32_t s = 0x2468ACEu;
     int i;
     for (i = 0; i < BENCH_CM_N; i++) {
-        in_a[i] = fx_asr32(i32(rnd(&s)), rnd(&s) % 24u);
-        in_b[i] = fx_asr32(i32(rnd(&s)), rnd(&s) % 24u) | 1;
-        in_u32[i] = rnd(&s);
-        in_deg[i] = fx_asr32(i32(rnd(&s)), 6);
-        in_ratio[i] = fx_asr32(i32(rnd(&s)), 1);
-        in_acc[i] = fx_asr32(i32(rnd(&s)), 14);
+        in_a[i] = fx_asr32(i32(unit_rand32(&s)), unit_rand32(&s) % 24u);
+        in_b[i] = fx_asr32(i32(unit_rand32(&s)), unit_rand32(&s) % 24u) | 1;
+        in_u32[i] = unit_rand32(&s);
+        in_deg[i] = fx_asr32(i32(unit_rand32(&s)), 6);
+        in_ratio[i] = fx_asr32(i32(unit_rand32(&s)), 1);
+        in_acc[i] = fx_asr32(i32(unit_rand32(&s)), 14);
         in_pos[i] = in_a[i] & INT32_MAX;
         in_rpos[i] = in_ratio[i] & INT32_MAX;
     }

@@ -23,23 +23,12 @@
 #define FX_TEST_REDUCED UNIT_REDUCED
 #define FX_DENSITY(full, reduced) UNIT_SIZE(full, reduced)
 
-/* xorshift32: the same sequence on every target. */
-static inline uint32_t fxt_rand(uint32_t *state)
-{
-    uint32_t x = *state;
-    x ^= x << 13;
-    x ^= x >> 17;
-    x ^= x << 5;
-    *state = x;
-    return x;
-}
-
 /* A random int32 with a random magnitude (2^0 .. 2^31) and sign, so that every scale is hit;
  * includes INT32_MIN and INT32_MAX. */
 static inline int32_t fxt_rand_scaled(uint32_t *state)
 {
-    uint32_t r = fxt_rand(state);
-    unsigned sh = fxt_rand(state) % 32u;
+    uint32_t r = unit_rand32(state);
+    unsigned sh = unit_rand32(state) % 32u;
     int32_t m = (int32_t)((r >> 1) >> sh); /* [0, 2^31 - 1] */
     return (r & 1u) ? -m - 1 : m;
 }

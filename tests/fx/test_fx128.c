@@ -119,8 +119,8 @@ static fx_i128_t from_n(i128 v)
 
 static int64_t rnd64(uint32_t *st)
 {
-    uint64_t r = ((uint64_t)fxt_rand(st) << 32) | fxt_rand(st);
-    unsigned sh = fxt_rand(st) % 64u;
+    uint64_t r = ((uint64_t)unit_rand32(st) << 32) | unit_rand32(st);
+    unsigned sh = unit_rand32(st) % 64u;
     int64_t m = (int64_t)((r >> 1) >> sh);
     return (r & 1u) ? -m - 1 : m;
 }
@@ -145,7 +145,7 @@ static void test_random_against_int128(void)
         int64_t a = rnd64(&st), b = rnd64(&st), c = rnd64(&st);
         i128 p = (i128)a * b;
         fx_i128_t fp = fx_i128_mul(a, b);
-        unsigned s = fxt_rand(&st) % 127u;
+        unsigned s = unit_rand32(&st) % 127u;
         bool sat = false;
         int64_t r;
         i128 rr;

@@ -125,10 +125,10 @@ static void test_rounding_shifts(void)
     }
     for (k = 0; k < N_RANDOM / 16; k++) {
         int32_t x = fxt_rand_scaled(&st);
-        int64_t y = (int64_t)fxt_rand_scaled(&st) * (int64_t)(fxt_rand(&st) >> 2);
-        s = fxt_rand(&st) % 32u;
+        int64_t y = (int64_t)fxt_rand_scaled(&st) * (int64_t)(unit_rand32(&st) >> 2);
+        s = unit_rand32(&st) % 32u;
         CHECK_EQ_INT(fx_rshift_round32(x, s), fxt_round_div(x, (int64_t)1 << s));
-        s = fxt_rand(&st) % 62u;
+        s = unit_rand32(&st) % 62u;
         CHECK_EQ_INT(fx_rshift_round64(y, s), fxt_round_div(y, (int64_t)1 << s));
         /* odd symmetry */
         if (x != INT32_MIN) CHECK_EQ_INT(fx_rshift_round32(-x, s % 32u), -fx_rshift_round32(x, s % 32u));
@@ -168,7 +168,7 @@ static void test_multiply(void)
     }
     for (k = 0; k < N_RANDOM; k++) {
         int32_t a = fxt_rand_scaled(&st), b = fxt_rand_scaled(&st);
-        unsigned s = fxt_rand(&st) % 62u;
+        unsigned s = unit_rand32(&st) % 62u;
         if (fx_mul_q16(a, b) != ref_mul(a, b, 16)) bad16++;
         if (fx_mul_q30(a, b) != ref_mul(a, b, 30)) bad30++;
         if (fx_mul_shift(a, b, s) != ref_mul(a, b, s)) badsh++;
@@ -292,7 +292,7 @@ static void test_divide(void)
     }
     for (k = 0; k < N_RANDOM; k++) {
         int32_t num = fxt_rand_scaled(&st), den = fxt_rand_scaled(&st);
-        bad += (unsigned long)div_mismatch(num, den, fxt_rand(&st) % 32u);
+        bad += (unsigned long)div_mismatch(num, den, unit_rand32(&st) % 32u);
         /* odd symmetry of the rounding */
         if (num != INT32_MIN && den != 0) {
             int32_t q1 = 0, q2 = 0;
@@ -308,9 +308,9 @@ static void test_divide(void)
 /* A random int64 with a random magnitude (2^0 .. 2^62) and sign. */
 static int64_t rand_i64(uint32_t *st)
 {
-    const uint64_t u = ((uint64_t)fxt_rand(st) << 32 | fxt_rand(st)) >> 2; /* [0, 2^62) */
-    const int64_t m = (int64_t)(u >> (fxt_rand(st) % 63u));
-    return (fxt_rand(st) & 1u) ? -m : m;
+    const uint64_t u = ((uint64_t)unit_rand32(st) << 32 | unit_rand32(st)) >> 2; /* [0, 2^62) */
+    const int64_t m = (int64_t)(u >> (unit_rand32(st) % 63u));
+    return (unit_rand32(st) & 1u) ? -m : m;
 }
 
 static void test_divide64(void)
@@ -359,7 +359,7 @@ static void test_divide64(void)
     /* random numerators and denominators of every magnitude against the exact reference */
     for (k = 0; k < N_RANDOM; k++) {
         const int64_t num = rand_i64(&st);
-        const uint32_t den = (fxt_rand(&st) >> (fxt_rand(&st) % 32u)) | 1u;
+        const uint32_t den = (unit_rand32(&st) >> (unit_rand32(&st) % 32u)) | 1u;
         const int32_t q = fx_div64(num, den);
         if (q != fxt_sat(fxt_round_div(num, den))) bad++;
         if (q != INT32_MIN && q != INT32_MAX && fx_div64(-num, den) != -q) badodd++;

@@ -62,7 +62,7 @@ static void test_isqrt32(void)
         }
     }
     for (i = 0; i < n_rand; i++, total++) {
-        uint32_t v = fxt_rand(&st) >> (fxt_rand(&st) % 32u);
+        uint32_t v = unit_rand32(&st) >> (unit_rand32(&st) % 32u);
         bad += !floor_ok(v, fx_isqrt32(v));
     }
     CHECK_EQ_INT(fx_isqrt32(0), 0);
@@ -105,8 +105,8 @@ static void test_isqrt64(void)
         }
     }
     for (i = 0; i < n_rand; i++, total += 3) {
-        uint64_t k = fxt_rand(&st) >> (fxt_rand(&st) % 32u), sq = k * k;
-        uint64_t v = (((uint64_t)fxt_rand(&st) << 32) | fxt_rand(&st)) >> (fxt_rand(&st) % 64u);
+        uint64_t k = unit_rand32(&st) >> (unit_rand32(&st) % 32u), sq = k * k;
+        uint64_t v = (((uint64_t)unit_rand32(&st) << 32) | unit_rand32(&st)) >> (unit_rand32(&st) % 64u);
         bad += !floor_ok(v, fx_isqrt64(v)) + !floor_ok(sq + k, fx_isqrt64(sq + k));
         bad += !floor_ok(sq - (k != 0), fx_isqrt64(sq - (k != 0)));
         badr += round64_bad(v) + round64_bad(sq + k) + round64_bad(sq - k) + round64_bad(sq + k + 1u);
@@ -141,7 +141,7 @@ static void sweep_q(const char *name, fx_q16_t (*fn)(int32_t), unsigned shift)
         if (i < 0) x = 0x7FFFFFFFu;
         else if (i < (long)(0x80000000u / stride)) x = (uint32_t)i * stride;
         else if (i < (long)(0x80000000u / stride) + (long)small) x = (uint32_t)(i - (long)(0x80000000u / stride));
-        else x = (fxt_rand(&st) >> 1) >> (fxt_rand(&st) % 31u);
+        else x = (unit_rand32(&st) >> 1) >> (unit_rand32(&st) % 31u);
         r = fn((int32_t)x);
         bad += !round_ok((uint64_t)x << shift, (uint64_t)(uint32_t)r);
         fxt_err_add(&err, (double)r - sqrt(ldexp((double)x, (int)shift)), x, r);

@@ -169,12 +169,7 @@ static void test_rounded_gain(void)
 static uint32_t rng_state = 0xC0FFEEu;
 static uint32_t rnd(void)
 {
-    uint32_t x = rng_state;
-    x ^= x << 13;
-    x ^= x >> 17;
-    x ^= x << 5;
-    rng_state = x;
-    return x;
+    return unit_rand32(&rng_state);
 }
 
 /* 20 000 steps of a 3-state filter with random measurements: P stays exactly symmetric with a

@@ -40,6 +40,18 @@ extern "C" {
 #define UNIT_REDUCED (UNIT_ON_TARGET || UNIT_SANITIZED)
 #define UNIT_SIZE(full, reduced) (UNIT_REDUCED ? (reduced) : (full))
 
+/* xorshift32 (Marsaglia): a seeded pseudo-random sequence, the same on every target, for test
+ * inputs and benchmark operands. *state must not be 0 (0 stays 0). */
+static inline uint32_t unit_rand32(uint32_t *state)
+{
+    uint32_t x = *state;
+    x ^= x << 13;
+    x ^= x >> 17;
+    x ^= x << 5;
+    *state = x;
+    return x;
+}
+
 extern unsigned unit_checks;
 extern unsigned unit_failures;
 
