@@ -1,5 +1,6 @@
 /* trace.c - register-traffic record and replay (see sim/trace.h, docs/traces.md). */
 #include "inclino/sim/trace.h"
+#include "trace_line.h"
 
 #include <ctype.h>
 #include <stdarg.h>
@@ -45,49 +46,100 @@ static int fail_msg(char *msg, size_t len, unsigned line, const char *what)
     return INC_ERR_FORMAT;
 }
 
-/* Parse "key=" then an unsigned decimal number. */
+int trace_read_line(FILE *f, char *buf, size_t cap)
+{
+    size_t n = 0;
+    int c, err = TRACE_LINE_OK;
+    while ((c = getc(f)) != EOF && c != '\n') {
+        if (c == '\0') {
+            err = TRACE_LINE_NUL;
+        } else if (n + 1u >= cap) {
+            err = err == TRACE_LINE_OK ? TRACE_LINE_TOO_LONG : err;
+        } else {
+            buf[n++] = (char)c;
+        }
+    }
+    buf[n] = '\0';
+    if (c == EOF && ferror(f)) {
+        return TRACE_LINE_IO;
+    }
+    if (c == EOF && n == 0 && err == TRACE_LINE_OK) {
+        return TRACE_LINE_EOF;
+    }
+    return err;
+}
+
+static bool is_blank(char c)
+{
+    return c == ' ' || c == '\t';
+}
+
+/*
+ * Parse blanks (at least one: fields are separated, docs/traces.md), "key=", then an unsigned
+ * decimal number <= max. Digits are accumulated here rather than with strtoull, which would
+ * saturate a value beyond 64 bits to UINT64_MAX and let it pass as a valid time.
+ */
 static const char *parse_num(const char *p, const char *key, unsigned long long max,
                              unsigned long long *out)
 {
     size_t kl = strlen(key);
-    char *end;
-    unsigned long long v;
-    while (*p == ' ' || *p == '\t') p++;
+    unsigned long long v = 0;
+    if (!is_blank(*p)) {
+        return NULL;
+    }
+    while (is_blank(*p)) p++;
     if (strncmp(p, key, kl) != 0 || !isdigit((unsigned char)p[kl])) {
         return NULL;
     }
-    v = strtoull(p + kl, &end, 10);
-    if (v > max) {
-        return NULL;
+    p += kl;
+    while (isdigit((unsigned char)*p)) {
+        const unsigned d = (unsigned)(*p - '0');
+        if (v > (max - d) / 10u) {
+            return NULL; /* beyond max (or beyond 64 bits) */
+        }
+        v = v * 10u + d;
+        p++;
     }
     *out = v;
-    return end;
+    return p;
 }
 
-/* Parse "key=" then comma-separated hex words. */
+static int hex_digit(char c)
+{
+    if (c >= '0' && c <= '9') return c - '0';
+    if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+    if (c >= 'A' && c <= 'F') return c - 'A' + 10;
+    return -1;
+}
+
+/* Parse blanks (at least one), "key=", then comma-separated words of 1..4 hex digits (no "0x"). */
 static const char *parse_words(const char *p, const char *key, unsigned bits, uint16_t *w,
                                unsigned *n)
 {
     size_t kl = strlen(key);
-    const unsigned long max = bits == 8u ? 0xFFul : 0xFFFFul;
+    const unsigned max = bits == 8u ? 0xFFu : 0xFFFFu;
     unsigned k = 0;
-    while (*p == ' ' || *p == '\t') p++;
+    if (!is_blank(*p)) {
+        return NULL;
+    }
+    while (is_blank(*p)) p++;
     if (strncmp(p, key, kl) != 0) {
         return NULL;
     }
     p += kl;
     for (;;) {
-        char *end;
-        unsigned long v;
-        if (!isxdigit((unsigned char)*p) || k == TRACE_MAX_WORDS) {
-            return NULL;
+        unsigned v = 0, digits = 0;
+        while (hex_digit(*p) >= 0) {
+            if (++digits > 4u) {
+                return NULL;
+            }
+            v = v * 16u + (unsigned)hex_digit(*p);
+            p++;
         }
-        v = strtoul(p, &end, 16);
-        if (v > max || end - p > 4) {
+        if (digits == 0 || v > max || k == TRACE_MAX_WORDS) {
             return NULL;
         }
         w[k++] = (uint16_t)v;
-        p = end;
         if (*p != ',') {
             break;
         }
@@ -105,18 +157,28 @@ static bool rest_is_blank(const char *p)
 
 int trace_parse_next(FILE *f, unsigned *line, struct trace_record *r, char *msg, size_t msg_len)
 {
-    char buf[4096];
+    char buf[TRACE_LINE_MAX + 1u];
+    int got;
     if (f == NULL || line == NULL || r == NULL) {
         return INC_ERR_NULL;
     }
-    while (fgets(buf, sizeof(buf), f) != NULL) {
+    while ((got = trace_read_line(f, buf, sizeof(buf))) != TRACE_LINE_EOF) {
         const char *p = buf;
         unsigned long long v;
         (*line)++;
-        if (strchr(buf, '\n') == NULL && !feof(f)) {
+        if (got == TRACE_LINE_TOO_LONG) {
             return fail_msg(msg, msg_len, *line, "line too long");
         }
-        while (*p == ' ' || *p == '\t') p++;
+        if (got == TRACE_LINE_NUL) {
+            return fail_msg(msg, msg_len, *line, "NUL byte in the line");
+        }
+        if (got == TRACE_LINE_IO) {
+            if (msg != NULL && msg_len > 0) {
+                snprintf(msg, msg_len, "trace line %u: read error", *line);
+            }
+            return INC_ERR_IO;
+        }
+        while (is_blank(*p)) p++;
         if (*p == '#' || rest_is_blank(p)) {
             continue;
         }
@@ -124,7 +186,7 @@ int trace_parse_next(FILE *f, unsigned *line, struct trace_record *r, char *msg,
         r->line = *line;
         if (p[0] == 'I' && p[1] == ' ') {
             r->kind = TRACE_IRQ;
-            p = parse_num(p + 2, "t=", UINT64_MAX, &v);
+            p = parse_num(p + 1, "t=", UINT64_MAX, &v);
             if (p == NULL) return fail_msg(msg, msg_len, *line, "bad or missing t=");
             r->t_ns = v;
             p = parse_num(p, "pin=", 0xFFFEu, &v);
@@ -133,7 +195,7 @@ int trace_parse_next(FILE *f, unsigned *line, struct trace_record *r, char *msg,
         } else if (p[0] == 'F' && p[1] == ' ') {
             unsigned n2 = 0;
             r->kind = TRACE_PERIOD;
-            p = parse_num(p + 2, "t=", UINT64_MAX, &v);
+            p = parse_num(p + 1, "t=", UINT64_MAX, &v);
             if (p == NULL) return fail_msg(msg, msg_len, *line, "bad or missing t=");
             r->t_ns = v;
             p = parse_num(p, "cs=", 0xFFFEu, &v);
@@ -564,8 +626,11 @@ int trace_replay_open(struct trace_replay *rp, const char *path)
         rp->status = INC_ERR_IO;
         return INC_ERR_IO;
     }
-    if (fgets(head, sizeof(head), rp->f) == NULL ||
-        strncmp(head, TRACE_HEADER, strlen(TRACE_HEADER)) != 0) {
+    /* The header line exactly (trailing blanks or a CR allowed): "# inclino-trace 12" or a
+     * header with more text is another format, not version 1. */
+    if (trace_read_line(rp->f, head, sizeof(head)) != TRACE_LINE_OK ||
+        strncmp(head, TRACE_HEADER, strlen(TRACE_HEADER)) != 0 ||
+        !rest_is_blank(head + strlen(TRACE_HEADER))) {
         snprintf(rp->msg, sizeof(rp->msg), "trace line 1: not an inclino trace (expected '%s')",
                  TRACE_HEADER);
         rp->status = INC_ERR_FORMAT;

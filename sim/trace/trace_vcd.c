@@ -1,6 +1,8 @@
 /* trace_vcd.c - logic-analyser capture (VCD) to trace (see sim/trace.h, docs/traces.md). */
 #include "inclino/sim/trace.h"
+#include "trace_line.h"
 
+#include <ctype.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -19,28 +21,73 @@ static int vfail(char *msg, size_t len, const char *what, unsigned long long at_
     return INC_ERR_FORMAT;
 }
 
-/* Timescale "1 ns", "10ns", "1 us", "100 ps" ... -> numerator/denominator to ns. */
+/* "VCD line N: what" */
+static int lfail(char *msg, size_t len, unsigned line, const char *what)
+{
+    if (msg != NULL && len > 0) {
+        snprintf(msg, len, "VCD line %u: %s", line, what);
+    }
+    return INC_ERR_FORMAT;
+}
+
+/*
+ * Timescale "1 ns", "10ns", "1 us", "100 ps" ... -> numerator/denominator to ns. The number is
+ * 1..1000 in decimal digits (IEEE 1364 allows 1, 10, 100); a sign, another unit or a number that
+ * would overflow the scale is refused rather than wrapped.
+ */
 static int parse_timescale(const char *s, unsigned long long *mul, unsigned long long *div)
 {
-    char *end;
-    unsigned long n = strtoul(s, &end, 10);
-    while (*end == ' ') end++;
+    unsigned long long n = 0;
+    unsigned digits = 0;
+    while (isdigit((unsigned char)*s) && digits < 5u) {
+        n = n * 10u + (unsigned)(*s++ - '0');
+        digits++;
+    }
+    if (digits == 0 || isdigit((unsigned char)*s) || n == 0 || n > 1000u) {
+        return -1;
+    }
+    while (*s == ' ') s++;
     *mul = n;
     *div = 1;
-    if (strncmp(end, "fs", 2) == 0) *div = 1000000;
-    else if (strncmp(end, "ps", 2) == 0) *div = 1000;
-    else if (strncmp(end, "ns", 2) == 0) *div = 1;
-    else if (strncmp(end, "us", 2) == 0) *mul = n * 1000ull;
-    else if (strncmp(end, "ms", 2) == 0) *mul = n * 1000000ull;
-    else if (end[0] == 's') *mul = n * 1000000000ull;
+    if (strncmp(s, "fs", 2) == 0) *div = 1000000;
+    else if (strncmp(s, "ps", 2) == 0) *div = 1000;
+    else if (strncmp(s, "ns", 2) == 0) *div = 1;
+    else if (strncmp(s, "us", 2) == 0) *mul = n * 1000ull;
+    else if (strncmp(s, "ms", 2) == 0) *mul = n * 1000000ull;
+    else if (s[0] == 's') *mul = n * 1000000000ull;
     else return -1;
-    return n == 0 ? -1 : 0;
+    return 0;
+}
+
+/* "#<decimal>" (p after the '#'), trailing blanks allowed, scaled to ns without overflow. */
+static int parse_time(const char *p, unsigned long long mul, unsigned long long div,
+                      unsigned long long *t)
+{
+    unsigned long long v = 0;
+    if (!isdigit((unsigned char)*p)) {
+        return -1;
+    }
+    while (isdigit((unsigned char)*p)) {
+        const unsigned d = (unsigned)(*p++ - '0');
+        if (v > (UINT64_MAX - d) / 10u) {
+            return -1;
+        }
+        v = v * 10u + d;
+    }
+    while (*p == ' ' || *p == '\t' || *p == '\r') p++;
+    if (*p != '\0' || v > (UINT64_MAX - 1u) / mul) {
+        return -1; /* UINT64_MAX itself is vfail's "no time" */
+    }
+    *t = v * mul / div;
+    return 0;
 }
 
 int trace_from_vcd(FILE *vcd, FILE *out, const struct trace_vcd_opts *o, char *msg, size_t msg_len)
 {
     static struct trace_record r; /* 1 KiB: kept off the stack */
     char line[512];
+    unsigned lineno = 0;
+    int got;
     char id_sclk[VCD_ID_MAX] = "", id_mosi[VCD_ID_MAX] = "", id_miso[VCD_ID_MAX] = "",
          id_cs[VCD_ID_MAX] = "";
     int sclk = -1, mosi = 0, miso = 0, cs = 1;
@@ -60,8 +107,19 @@ int trace_from_vcd(FILE *vcd, FILE *out, const struct trace_vcd_opts *o, char *m
     cpha = (int)(o->mode & 1u);
     fprintf(out, "# inclino-trace 1\n# converted from a VCD capture (mode %u, %u-bit)\n", o->mode,
             o->bits);
-    while (fgets(line, sizeof(line), vcd) != NULL) {
+    while ((got = trace_read_line(vcd, line, sizeof(line))) != TRACE_LINE_EOF) {
         char *p = line;
+        lineno++;
+        if (got == TRACE_LINE_TOO_LONG) {
+            return lfail(msg, msg_len, lineno, "line longer than 511 characters");
+        }
+        if (got == TRACE_LINE_NUL) {
+            return lfail(msg, msg_len, lineno, "NUL byte in the line");
+        }
+        if (got == TRACE_LINE_IO) {
+            lfail(msg, msg_len, lineno, "read error");
+            return INC_ERR_IO;
+        }
         while (*p == ' ' || *p == '\t') p++;
         if (in_defs) {
             char id[VCD_ID_MAX], name[64];
@@ -69,9 +127,9 @@ int trace_from_vcd(FILE *vcd, FILE *out, const struct trace_vcd_opts *o, char *m
             if (in_timescale || strncmp(p, "$timescale", 10) == 0) {
                 char *q = in_timescale ? p : p + 10;
                 while (*q == ' ') q++;
-                if (*q != '\0' && *q != '\n' && strncmp(q, "$end", 4) != 0) {
+                if (*q != '\0' && *q != '\r' && strncmp(q, "$end", 4) != 0) {
                     if (parse_timescale(q, &mul, &div) != 0) {
-                        return vfail(msg, msg_len, "VCD: unsupported $timescale", UINT64_MAX);
+                        return lfail(msg, msg_len, lineno, "unsupported $timescale");
                     }
                     in_timescale = 0;
                 } else {
@@ -96,7 +154,16 @@ int trace_from_vcd(FILE *vcd, FILE *out, const struct trace_vcd_opts *o, char *m
             continue;
         }
         if (p[0] == '#') {
-            t = strtoull(p + 1, NULL, 10) * mul / div;
+            /* A timestamp that is not a plain decimal, overflows, or runs backwards is a broken
+             * capture: strtoull used to read "#abc" as 0 and "#-5" as a huge time. */
+            unsigned long long nt;
+            if (parse_time(p + 1, mul, div, &nt) != 0) {
+                return lfail(msg, msg_len, lineno, "bad timestamp (decimal digits within 64 bits expected)");
+            }
+            if (nt < t) {
+                return lfail(msg, msg_len, lineno, "timestamp goes backwards");
+            }
+            t = nt;
             continue;
         }
         if (p[0] == '0' || p[0] == '1' || p[0] == 'x' || p[0] == 'z' || p[0] == 'X' || p[0] == 'Z') {

@@ -32,6 +32,7 @@ extern "C" {
 #define TRACE_MAX_WORDS SPI_MAX_FRAMES  /* words in one CS period */
 #define TRACE_MAX_IRQS 8u
 #define TRACE_MSG_LEN 200u
+#define TRACE_LINE_MAX 4095u     /* characters in one line of a trace, before its newline */
 
 struct trace_rec;
 
@@ -84,7 +85,9 @@ struct trace_record {
 /*
  * Read the next record from f (skipping blank and comment lines; *line counts lines).
  * Returns 1 with *r filled, 0 at the end of the file, or INC_ERR_FORMAT with a message in msg
- * (naming the line) for a malformed line.
+ * (naming the line) for a malformed line: a field that is missing, not separated by blanks, out
+ * of range or beyond 64 bits, a word that is not 1..4 hex digits, a NUL byte, more than
+ * TRACE_LINE_MAX characters. INC_ERR_IO on a read error.
  */
 int trace_parse_next(FILE *f, unsigned *line, struct trace_record *r, char *msg, size_t msg_len);
 
