@@ -27,11 +27,10 @@
 #include "inclino/adis_imu.h"
 #include "inclino/app.h"
 #include "inclino/calstore.h"
+#include "inclino/imu_csv.h"
 #include "inclino/sca3000.h"
 #include "inclino/tilt.h"
 
-#define MAX_LINE 1024
-#define MAX_FIELDS 16
 
 /* ---- Parts ---------------------------------------------------------------------------------- */
 
@@ -112,154 +111,19 @@ static void quantise_row(const struct part *p, const double *v, bool have_temp, 
     if (gsat) s->flags |= APP_S_GYRO_SAT;
 }
 
-/* ---- CSV ------------------------------------------------------------------------------------ */
+/* ---- CSV: inclino/imu_csv.h ----------------------------------------------------------------- */
 
-struct row {
-    double v[8];
-    long line;
-};
-
-struct table {
-    struct row *rows;
-    size_t n, cap;
-    int cols;          /* 7 or 8 */
-};
-
-static char *trim(char *s)
+static int read_table(const char *path, struct imu_csv_table *t, char *msg, size_t msg_len)
 {
-    char *e;
-    while (*s == ' ' || *s == '\t') s++;
-    e = s + strlen(s);
-    while (e > s && (e[-1] == ' ' || e[-1] == '\t' || e[-1] == '\r' || e[-1] == '\n')) e--;
-    *e = '\0';
-    return s;
-}
-
-static int split(char *line, char **f)
-{
-    int n = 0;
-    char *p = line;
-    for (;;) {
-        char *c = strchr(p, ',');
-        if (n == MAX_FIELDS) return n + 1;
-        f[n++] = trim(p);
-        if (c == NULL) return n;
-        *c = '\0';
-        p = c + 1;
-    }
-}
-
-/* 0: a finite number; 1: not a number; 2: NaN or infinite. */
-static int parse_num(const char *s, double *out)
-{
-    char *end;
-    if (*s == '\0') return 1;
-    errno = 0;
-    *out = strtod(s, &end);
-    if (*end != '\0') return 1;
-    if (!isfinite(*out)) return 2;
-    return 0;
-}
-
-static const char *const col_names[8] = {"time", "gyro x", "gyro y", "gyro z", "accel x", "accel y",
-                                         "accel z", "temperature"};
-
-static int read_table(const char *path, struct table *t, char *msg, size_t msg_len)
-{
-    char buf[MAX_LINE + 2];
-    char *f[MAX_FIELDS + 1];
     FILE *in = fopen(path, "r");
-    long line = 0, cols_line = 0;
-    bool first = true;
+    int err;
     if (in == NULL) {
         snprintf(msg, msg_len, "%s: cannot open (%s)", path, strerror(errno));
         return 2;
     }
-    t->cols = 0;
-    while (fgets(buf, sizeof buf, in) != NULL) {
-        char *s;
-        int n, k;
-        struct row r;
-        line++;
-        if (strchr(buf, '\n') == NULL && !feof(in)) {
-            snprintf(msg, msg_len, "%s line %ld: longer than %d characters", path, line, MAX_LINE);
-            fclose(in);
-            return 1;
-        }
-        s = trim(buf);
-        if (*s == '\0' || *s == '#') continue;
-        n = split(s, f);
-        if (first) {
-            double d;
-            first = false;
-            if (parse_num(f[0], &d) == 1) { /* a header */
-                if (n != 7 && n != 8) {
-                    snprintf(msg, msg_len, "%s line %ld: the header has %d columns; expected 7 (time, gyro x y z, "
-                             "accel x y z) or 8 (and temperature)", path, line, n);
-                    fclose(in);
-                    return 1;
-                }
-                t->cols = n;
-                cols_line = line;
-                continue;
-            }
-        }
-        if (t->cols == 0) {
-            if (n != 7 && n != 8) {
-                snprintf(msg, msg_len, "%s line %ld: %d fields; expected 7 (time, gyro x y z, accel x y z) or 8 "
-                         "(and temperature)", path, line, n);
-                fclose(in);
-                return 1;
-            }
-            t->cols = n;
-            cols_line = line;
-        }
-        if (n != t->cols) {
-            snprintf(msg, msg_len, "%s line %ld: %d%s fields; expected %d as on line %ld", path, line,
-                     n > MAX_FIELDS ? MAX_FIELDS : n, n > MAX_FIELDS ? " or more" : "", t->cols, cols_line);
-            fclose(in);
-            return 1;
-        }
-        for (k = 0; k < n; k++) {
-            const int e = parse_num(f[k], &r.v[k]);
-            if (e != 0) {
-                snprintf(msg, msg_len, "%s line %ld: field %d (%s) '%s' is %s", path, line, k + 1, col_names[k], f[k],
-                         e == 1 ? "not a number" : "NaN or infinite");
-                fclose(in);
-                return 1;
-            }
-        }
-        if (t->n > 0 && !(r.v[0] > t->rows[t->n - 1].v[0])) {
-            snprintf(msg, msg_len, "%s line %ld: time %.9g s does not increase (line %ld: %.9g s)", path, line, r.v[0],
-                     t->rows[t->n - 1].line, t->rows[t->n - 1].v[0]);
-            fclose(in);
-            return 1;
-        }
-        r.line = line;
-        if (t->n == t->cap) {
-            size_t cap = t->cap ? 2u * t->cap : 1024u;
-            struct row *nr = realloc(t->rows, cap * sizeof(*nr));
-            if (nr == NULL) {
-                snprintf(msg, msg_len, "out of memory");
-                fclose(in);
-                return 2;
-            }
-            t->rows = nr;
-            t->cap = cap;
-        }
-        t->rows[t->n++] = r;
-    }
-    if (ferror(in)) {
-        snprintf(msg, msg_len, "%s: read error", path);
-        fclose(in);
-        return 2;
-    }
+    err = imu_csv_read(in, path, t, msg, msg_len);
     fclose(in);
-    if (t->n < 2u) {
-        snprintf(msg, msg_len, "%s: %zu data rows; at least 2 are needed", path, t->n);
-        return 1;
-    }
-    return 0;
+    return err == INC_OK ? 0 : (err == INC_ERR_FORMAT ? 1 : 2);
 }
 
 static int cmp_double(const void *a, const void *b)
@@ -350,7 +214,7 @@ static void usage(void)
 static bool opt_num(const char *s, double lo, double hi, double *out)
 {
     double d;
-    if (s == NULL || parse_num(s, &d) != 0 || d < lo || d > hi) return false;
+    if (s == NULL || imu_csv_number(s, &d) != 0 || d < lo || d > hi) return false;
     *out = d;
     return true;
 }
@@ -460,7 +324,7 @@ int main(int argc, char **argv)
     static struct calstore store;
     static struct tilt tilt;
     struct opts o;
-    struct table t = {NULL, 0, 0, 0};
+    struct imu_csv_table t = {NULL, 0, 0, 0};
     struct app_cfg cfg;
     struct tilt_config tc;
     struct replay_id rid;
@@ -593,7 +457,7 @@ int main(int argc, char **argv)
                  "block,slope_deg,grade_pct,bound_deg,bound_pct,slope_flags,app_flags,valid\n");
     period = nominal;
     for (i = 0; i < t.n; i++) {
-        const struct row *r = &t.rows[i];
+        const struct imu_csv_row *r = &t.rows[i];
         const double dt = i == 0 ? period : r->v[0] - t.rows[i - 1].v[0];
         struct app_sample s;
         struct app_corrected c;
