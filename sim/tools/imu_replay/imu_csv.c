@@ -44,6 +44,26 @@ int imu_csv_number(const char *s, double *out)
     return 0;
 }
 
+/*
+ * One line into buf (newline kept out). Bytes are counted here: with fgets a NUL byte in the
+ * last line (no newline after it) cut the line silently, "1.5\0 7" read as 1.5. Returns 1 for a
+ * line, 0 at the end, -1 for a line longer than the limit, -2 for a NUL byte, -3 read error.
+ */
+static int read_line(FILE *in, char *buf, size_t cap)
+{
+    size_t n = 0;
+    int c, r = 1;
+    while ((c = getc(in)) != EOF && c != '\n') {
+        if (c == '\0') r = r == 1 ? -2 : r;
+        else if (n + 1u >= cap) r = r == 1 ? -1 : r;
+        else buf[n++] = (char)c;
+    }
+    buf[n] = '\0';
+    if (c == EOF && ferror(in)) return -3;
+    if (c == EOF && n == 0 && r == 1) return 0;
+    return r;
+}
+
 static const char *const col_names[8] = {"time", "gyro x", "gyro y", "gyro z", "accel x", "accel y",
                                          "accel z", "temperature"};
 
@@ -55,31 +75,47 @@ static int fail(struct imu_csv_table *t, int err)
 
 int imu_csv_read(FILE *in, const char *name, struct imu_csv_table *t, char *msg, size_t msg_len)
 {
-    char buf[IMU_CSV_MAX_LINE + 2];
+    char buf[IMU_CSV_MAX_LINE + 1];
     char *f[IMU_CSV_MAX_FIELDS + 1];
     long line = 0, cols_line = 0;
     bool first = true;
+    int got;
     if (in == NULL || name == NULL || t == NULL || msg == NULL || msg_len == 0) {
         return INC_ERR_NULL;
     }
     memset(t, 0, sizeof(*t));
     msg[0] = '\0';
-    while (fgets(buf, sizeof buf, in) != NULL) {
+    while ((got = read_line(in, buf, sizeof buf)) != 0) {
         char *s;
         int n, k;
         struct imu_csv_row r;
         line++;
-        if (strchr(buf, '\n') == NULL && !feof(in)) {
+        if (got == -1) {
             snprintf(msg, msg_len, "%s line %ld: longer than %d characters", name, line, IMU_CSV_MAX_LINE);
             return fail(t, INC_ERR_FORMAT);
+        }
+        if (got == -2) {
+            snprintf(msg, msg_len, "%s line %ld: NUL byte in the line", name, line);
+            return fail(t, INC_ERR_FORMAT);
+        }
+        if (got == -3) {
+            snprintf(msg, msg_len, "%s: read error", name);
+            return fail(t, INC_ERR_IO);
         }
         s = trim(buf);
         if (*s == '\0' || *s == '#') continue;
         n = split(s, f);
         if (first) {
             double d;
+            int k2, named = 0;
             first = false;
-            if (imu_csv_number(f[0], &d) == 1) { /* a header */
+            /* A header names every column: no field empty or a number. A first row whose time is
+             * empty or garbled (",0.1,...", "n.5,0.1,...") used to be taken for a header and
+             * dropped silently; it is a data row with a bad field. */
+            for (k2 = 0; k2 < n && k2 < IMU_CSV_MAX_FIELDS; k2++) {
+                named += f[k2][0] != '\0' && imu_csv_number(f[k2], &d) == 1;
+            }
+            if (named == n) {
                 if (n != 7 && n != 8) {
                     snprintf(msg, msg_len, "%s line %ld: the header has %d columns; expected 7 (time, gyro x y z, "
                              "accel x y z) or 8 (and temperature)", name, line, n);
@@ -113,6 +149,13 @@ int imu_csv_read(FILE *in, const char *name, struct imu_csv_table *t, char *msg,
                 return fail(t, INC_ERR_FORMAT);
             }
         }
+        /* The tool turns time into uint64 ns: a negative or huge time was undefined behaviour
+         * there (a double outside the target's range converted to an integer). */
+        if (!(r.v[0] >= 0.0 && r.v[0] <= IMU_CSV_TIME_MAX_S)) {
+            snprintf(msg, msg_len, "%s line %ld: time %.9g s outside 0..%.0e s", name, line, r.v[0],
+                     IMU_CSV_TIME_MAX_S);
+            return fail(t, INC_ERR_FORMAT);
+        }
         if (t->n > 0 && !(r.v[0] > t->rows[t->n - 1].v[0])) {
             snprintf(msg, msg_len, "%s line %ld: time %.9g s does not increase (line %ld: %.9g s)", name, line, r.v[0],
                      t->rows[t->n - 1].line, t->rows[t->n - 1].v[0]);
@@ -130,10 +173,6 @@ int imu_csv_read(FILE *in, const char *name, struct imu_csv_table *t, char *msg,
             t->cap = cap;
         }
         t->rows[t->n++] = r;
-    }
-    if (ferror(in)) {
-        snprintf(msg, msg_len, "%s: read error", name);
-        return fail(t, INC_ERR_IO);
     }
     if (t->n < 2u) {
         snprintf(msg, msg_len, "%s: %zu data rows; at least 2 are needed", name, t->n);

@@ -361,7 +361,9 @@ int main(int argc, char **argv)
 
     /* The application, configured as app_cfg_default for that rate, with the options. */
     (void)app_cfg_default(&cfg, rate_mhz);
-    windows = (uint32_t)fmax(1.0, floor(o.block_s / nominal / cfg.still.window + 0.5));
+    /* Clamped before the conversion: a file with microscopic time steps made this double exceed
+     * uint32_t (undefined behaviour); app_init refuses a block that long anyway. */
+    windows = (uint32_t)fmin(fmax(1.0, floor(o.block_s / nominal / cfg.still.window + 0.5)), 1e6);
     cfg.avg_n = windows * cfg.still.window;
     if (o.nonlin_mg >= 0.0) cfg.budget.nonlinearity_g = q16_mg(o.nonlin_mg);
     if (o.temp_comp_mg >= 0.0) cfg.budget.temp_comp_g = q16_mg(o.temp_comp_mg);
