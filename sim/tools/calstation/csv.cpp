@@ -52,7 +52,8 @@ std::string col_at(int line, int col)
     return "line " + std::to_string(line) + ", column '" + kCols[col] + "': ";
 }
 
-// A finite decimal number taking the whole field.
+// A finite decimal number taking the whole field. The end is compared with the field's size, not
+// with a NUL: a NUL byte inside the field ("1\0 500") used to end it and pass as 1.
 bool to_double(const std::string &s, double &v, std::string &why)
 {
     if (s.empty()) {
@@ -62,7 +63,7 @@ bool to_double(const std::string &s, double &v, std::string &why)
     char *end = nullptr;
     errno = 0;
     v = std::strtod(s.c_str(), &end);
-    if (end == s.c_str() || *end != '\0') {
+    if (end == s.c_str() || end != s.c_str() + s.size()) {
         why = "'" + s + "' is not a number";
         return false;
     }
@@ -73,16 +74,27 @@ bool to_double(const std::string &s, double &v, std::string &why)
     return true;
 }
 
-bool to_long(const std::string &s, long &v, std::string &why)
+// A decimal integer taking the whole field; with hex_ok also 0x... (the binding words are chip
+// ids). strtol with base 0 used to read "010" as octal 8: a leading zero is now refused as
+// ambiguous, and the end is compared with the field's size (a NUL byte inside cannot end it).
+bool to_long(const std::string &s, long &v, std::string &why, bool hex_ok)
 {
     if (s.empty()) {
         why = "empty field";
         return false;
     }
+    const size_t i = (s[0] == '-' || s[0] == '+') ? 1u : 0u;
+    int base = 10;
+    if (hex_ok && s.size() > i + 2u && s[i] == '0' && (s[i + 1u] == 'x' || s[i + 1u] == 'X')) {
+        base = 16;
+    } else if (s.size() > i + 1u && s[i] == '0') {
+        why = "'" + s + "' has a leading zero (octal or decimal?)";
+        return false;
+    }
     char *end = nullptr;
     errno = 0;
-    v = std::strtol(s.c_str(), &end, 0);
-    if (end == s.c_str() || *end != '\0' || errno == ERANGE) {
+    v = std::strtol(s.c_str(), &end, base);
+    if (end == s.c_str() || end != s.c_str() + s.size() || errno == ERANGE) {
         why = "'" + s + "' is not an integer";
         return false;
     }
@@ -119,7 +131,7 @@ std::string parse_setting(const std::string &body, int line, Station &st)
         if (f.size() != 6) return at(line) + "binding needs 6 integers (family,product,revision,serial,lot_id1,lot_id2)";
         for (size_t i = 0; i < 6; i++) {
             long v = 0;
-            if (!to_long(f[i], v, why) || v < 0 || v > 0xFFFFFFFFL) {
+            if (!to_long(f[i], v, why, true) || v < 0 || v > 0xFFFFFFFFL) {
                 return at(line) + "binding field " + std::to_string(i + 1) + ": " +
                        (why.empty() ? "out of range" : why);
             }
@@ -140,7 +152,7 @@ std::string parse_row(const std::vector<std::string> &f, int line, Row &r)
 {
     std::string why;
     r.line = line;
-    if (!to_long(f[0], r.block, why)) return col_at(line, 0) + why;
+    if (!to_long(f[0], r.block, why, false)) return col_at(line, 0) + why;
     if (r.block < 0) return col_at(line, 0) + "block id must be >= 0";
     if (f[1] == "acc") r.kind = RowKind::Acc;
     else if (f[1] == "gyro_still") r.kind = RowKind::GyroStill;
@@ -150,7 +162,7 @@ std::string parse_row(const std::vector<std::string> &f, int line, Row &r)
                        nullptr, &r.v[0], &r.v[1], &r.v[2]};
     for (int c = 2; c < 12; c++) {
         if (c == 8) {
-            if (!to_long(f[c], r.n, why)) return col_at(line, c) + why;
+            if (!to_long(f[c], r.n, why, false)) return col_at(line, c) + why;
             if (r.n < 1) return col_at(line, c) + "sample count must be >= 1";
             continue;
         }
