@@ -199,7 +199,7 @@ static void sweep(const char *label, const char *seed, size_t len)
     struct imu_csv_table t;
     char msg[600];
     unsigned long k;
-    size_t stride = UNIT_SIZE(len / 300u, len / 60u);
+    size_t stride = UNIT_SIZE(len / 300u, len / 150u);
     if (stride == 0) stride = 1;
     REQUIRE(read_buf(seed, len, &t, msg, sizeof msg) == INC_OK);
     CHECK(t.n == count_data_rows(seed, len) && t.n > 10u);
@@ -252,7 +252,7 @@ static void test_sweep(void)
     free(ex);
     free(gap);
     printf("imu_csv: %u cases, %u accepted, %u that must be refused\n", n_cases, n_ok, n_must);
-    CHECK(n_cases > UNIT_SIZE(10000u, 2000u));
+    CHECK(n_cases > UNIT_SIZE(12000u, 6000u));
     CHECK(n_must > n_cases / 10u);
     CHECK(n_ok > n_cases / 10u);
 }

@@ -289,7 +289,7 @@ static void test_trace_sweep(void)
         CHECK_EQ_INT(dut.status, 0);
         CHECK_EQ_INT(ref.status, 0);
         CHECK(dut.n > 0 && dut.n == ref.n);
-        stride = UNIT_SIZE(len / 300u, len / 40u);
+        stride = UNIT_SIZE(len / 300u, len / 150u);
         if (stride == 0) stride = 1;
         for (k = 0; fuzz_mutate(seed, len, k, stride, UNIT_SIZE(200u, 40u), &c) != FUZZ_END; k++) {
             unsigned i;
@@ -333,7 +333,7 @@ static void test_trace_sweep(void)
     }
     fuzz_case_free(&c);
     printf("trace: %u cases, %u accepted, %u that must be refused\n", n_cases, n_accepted, n_must_fail);
-    CHECK(n_cases > UNIT_SIZE(10000u, 1500u));
+    CHECK(n_cases > UNIT_SIZE(30000u, 15000u));
     CHECK(n_must_fail > n_cases / 10u);
     CHECK(n_accepted > n_cases / 10u);
 }
@@ -500,7 +500,7 @@ static void test_vcd_sweep(void)
     struct fuzz_case c = {NULL, 0, FUZZ_END, 0, 0};
     const size_t len = make_vcd(seed, sizeof seed);
     const size_t enddefs = (size_t)(strstr(seed, "$enddefinitions") - seed);
-    const size_t stride = UNIT_SIZE(len / 600u, len / 80u) ? UNIT_SIZE(len / 600u, len / 80u) : 1u;
+    const size_t stride = UNIT_SIZE(len / 600u, len / 300u) ? UNIT_SIZE(len / 600u, len / 300u) : 1u;
     unsigned long k;
     unsigned recs = 0, cases = 0, ok = 0, must = 0;
     static struct trace_record r;
@@ -549,8 +549,8 @@ static void test_vcd_sweep(void)
     }
     fuzz_case_free(&c);
     printf("vcd: %u cases, %u converted, %u that must be refused\n", cases, ok, must);
-    CHECK(cases > UNIT_SIZE(5000u, 800u));
-    CHECK(must > 50u);
+    CHECK(cases > UNIT_SIZE(10000u, 5000u));
+    CHECK(must > UNIT_SIZE(80u, 40u));
     CHECK(ok > cases / 4u);
 }
 
