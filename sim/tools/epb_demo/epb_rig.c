@@ -96,7 +96,7 @@ void epb_rig_truth(struct epb_rig *r, double t, double a[3], double rate[3])
     unsigned k, i;
     if (r->mode == EPB_RIG_STATION) {
         for (i = 0; i < 3u; i++) {
-            a[i] = face_vec[r->face][i];
+            a[i] = r->station_dir[i];
             rate[i] = 0.0;
         }
         return;
@@ -221,9 +221,7 @@ int epb_rig_init(struct epb_rig *r, enum epb_rig_part part, const struct sim_cal
     r->phys.sample = physics;
     r->phys.ctx = r;
     sim_rng_seed(&r->rng, seed ^ 0x56454849434Cull); /* "VEHICL" */
-    r->mode = EPB_RIG_STATION;
-    r->face = CAL_FACE_ZP;
-    r->station_temp_c = 25.0;
+    epb_rig_station(r, CAL_FACE_ZP, 25.0);
     epb_rig_vehicle_default(&r->veh);
     err = sim_board_init(&r->board);
     if (err != INC_OK) {
@@ -352,8 +350,19 @@ int epb_rig_power_up(struct epb_rig *r, const struct app_cfg *cfg)
 
 void epb_rig_station(struct epb_rig *r, int face, double temp_c)
 {
+    const int f = face >= 0 && face < CAL_FACES ? face : CAL_FACE_ZP;
+    epb_rig_station_dir(r, face_vec[f], temp_c);
+    r->face = f;
+}
+
+void epb_rig_station_dir(struct epb_rig *r, const double dir[3], double temp_c)
+{
+    unsigned i;
     r->mode = EPB_RIG_STATION;
-    r->face = face >= 0 && face < CAL_FACES ? face : CAL_FACE_ZP;
+    r->face = -1;
+    for (i = 0; i < 3u; i++) {
+        r->station_dir[i] = dir[i];
+    }
     r->station_temp_c = temp_c;
 }
 

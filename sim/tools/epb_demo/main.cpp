@@ -2,9 +2,11 @@
 // through the real drivers and the pin-level part models (docs/epb-demo.md).
 //
 //  1. End of line: the station turns the part through its six faces (25 degC, then optionally a
-//     hot and a cold soak); the firmware averages each face and computes offset, gain and gyro
-//     offset on the device; the station adds the cross-axis matrix and seed 000's three-point
-//     temperature models; the firmware stores the record in the simulated flash (calstore).
+//     hot and a cold soak) and, at 25 degC, through a tilt sweep of each axis within +-30 deg;
+//     the firmware averages each position and computes offset, gain and gyro offset on the
+//     device; the station adds the cross-axis matrix, the nonlinearity cubics and seed 000's
+//     three-point temperature models; the firmware stores the record in the simulated flash
+//     (calstore).
 //  2. The part goes into a car parked on a slope, engine idling.
 //  3. Power cycle: a fresh application instance loads the record, bound to the part, and gives
 //     its slope estimates with their error bounds, next to the true slope.
@@ -34,6 +36,9 @@ namespace {
 
 constexpr double kQ16 = 65536.0, kQ30 = 1073741824.0;
 constexpr double kPi = 3.14159265358979323846;
+// The tilt sweep: every 7.5 deg from -30 to +30 deg (seed 000's road slopes) on each axis.
+constexpr int kSweepSteps = 4;
+constexpr double kSweepStepDeg = 7.5;
 
 struct Options {
     double grade_pct = 10.0;
@@ -48,6 +53,7 @@ struct Options {
     double block_s = 0.0;       // 0: app_cfg_default's 2.5 s
     double face_s = 1.0;
     bool tcal = true;
+    bool sweep = true;          // nonlinearity tilt sweep at the ambient soak
     bool eol = true;
     bool engine = true;
     bool bumps = true;
@@ -73,6 +79,7 @@ void usage()
         "  --block-s S         samples averaged per estimate, s (default 2.5; whole stillness windows)\n"
         "  --face-s S          end of line: seconds averaged per face (default 1)\n"
         "  --no-tcal           end of line at 25 degC only (no three-point temperature step)\n"
+        "  --no-sweep          no tilt sweep: the nonlinearity stays uncorrected (seed 000's way)\n"
         "  --tcal-temps C,H    cold and hot soak temperatures (default -20,60)\n"
         "  --no-eol            skip the end of line: the flash stays empty (not calibrated)\n"
         "  --no-engine         engine off;  --no-bumps  no random bumps\n"
@@ -118,6 +125,7 @@ bool parse(int argc, char **argv, Options &o)
         else if (a == "--block-s") ok = take(o.block_s) && o.block_s >= 0.1 && o.block_s <= 600.0;
         else if (a == "--face-s") ok = take(o.face_s) && o.face_s >= 0.05 && o.face_s <= 600.0;
         else if (a == "--no-tcal") o.tcal = false;
+        else if (a == "--no-sweep") o.sweep = false;
         else if (a == "--tcal-temps") {
             i++;
             ok = v != nullptr && std::sscanf(v, "%lf,%lf", &o.t_cold, &o.t_hot) == 2 && o.t_cold < 24.0 &&
@@ -230,7 +238,8 @@ int main(int argc, char **argv)
     }
     epb::StationOut st;
     if (o.eol) {
-        std::printf("\nEnd of line: six faces per soak, %u samples each (%.1f s), firmware on-device flip\n", n_face, o.face_s);
+        std::printf("\nEnd of line: six faces per soak%s, %u samples each (%.1f s), firmware on-device flip\n",
+                    o.sweep ? " and a tilt sweep at 25 degC" : "", n_face, o.face_s);
         std::vector<double> temps = {25.0};
         if (o.tcal && pi->temp_lsb_c <= 0.0) {
             std::printf("  (the %s has no temperature output: no temperature step)\n", pi->name);
@@ -256,6 +265,24 @@ int main(int argc, char **argv)
                 for (const app_face &f : s.faces) sum += q16(f.temp_c);
                 s.temp_c = sum / CAL_FACES;
             }
+            if (o.sweep && soaks.empty()) { // the tilt table, at the ambient soak only
+                for (int a = 0; a < 3; a++) {
+                    for (int step = -kSweepSteps; step <= kSweepSteps; step++) {
+                        const double th = step * kSweepStepDeg * kPi / 180.0;
+                        epb::SweepPoint sp;
+                        sp.dir[a] = std::sin(th);
+                        sp.dir[a == 2 ? 0 : 2] = std::cos(th);
+                        epb_rig_station_dir(rig, sp.dir.data(), t);
+                        epb_rig_wait(rig, 0.2);
+                        err = app_eol_face(epb_rig_app(rig), n_face, FX_Q16_INT(1) / 20, FX_Q16_INT(2), &sp.meas);
+                        if (err != INC_OK) {
+                            std::fprintf(stderr, "epb_demo: sweep point %d of axis %d failed (%s)\n", step, a, inc_err_name(err));
+                            return 2;
+                        }
+                        s.sweep.push_back(sp);
+                    }
+                }
+            }
             calrec_set_default(&s.six);
             err = app_eol_six_position(s.faces.data(), &s.six);
             if (err != INC_OK) {
@@ -279,6 +306,10 @@ int main(int argc, char **argv)
         }
         std::printf("  station: cross-axis matrix from the 25 degC faces (off-diagonal up to %.2f mrad)",
                     [&] { double m = 0; for (int i = 0; i < 3; i++) for (int j = 0; j < 3; j++) if (i != j) m = std::fmax(m, std::fabs(st.misalign[i][j])); return m * 1e3; }());
+        if (st.nonlin) {
+            std::printf(";\n           nonlinearity cubics from the faces and a %zu-point tilt sweep (fit rms %.3f %.3f %.3f mg)",
+                        soaks[0].sweep.size(), st.nl_rms[0] * 1e3, st.nl_rms[1] * 1e3, st.nl_rms[2] * 1e3);
+        }
         if (st.tcal) std::printf(";\n           seed 000 three-point models of offset and gain (%.2f/%.2f/%.2f degC as read)",
                                  st.t_cold, st.t_amb, st.t_hot);
         std::printf("\n");

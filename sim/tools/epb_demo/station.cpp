@@ -33,6 +33,47 @@ fx_q30_t up30(double r)
     return static_cast<fx_q30_t>(std::min(std::ceil(r * kQ30), 536870911.0));
 }
 
+// The specific force on each face (enum cal_face order: +x, -x, +y, -y, +z, -z).
+constexpr double kFaceDir[CAL_FACES][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+
+// One row of the nonlinearity fit's design matrix.
+Eigen::Vector4d cubic_row(double v)
+{
+    return Eigen::Vector4d(1.0, v, v * v, v * v * v);
+}
+
+// Fit c0..c3 per element (station.hpp) into c.acc_nonlin; records the points for the budget.
+std::string fit_nonlinearity(const Soak &amb, const Eigen::Matrix3d &P, calstation::CalResult &c, StationOut &out)
+{
+    for (int i = 0; i < 3; i++) {
+        const double off = amb.six.acc_offset[i] / kQ16, gain = amb.six.acc_gain[i] / kQ30;
+        std::vector<double> vs, ts;
+        auto add = [&](const app_face &m, const double *dir) {
+            vs.push_back((m.accel_g[i] / kQ16 - off) / gain);
+            ts.push_back(P(i, 0) * dir[0] + P(i, 1) * dir[1] + P(i, 2) * dir[2]);
+        };
+        for (int f = 0; f < CAL_FACES; f++) add(amb.faces[f], kFaceDir[f]);
+        for (const SweepPoint &s : amb.sweep) add(s.meas, s.dir.data());
+        const int n = static_cast<int>(vs.size());
+        Eigen::MatrixXd X(n, 4);
+        Eigen::VectorXd y(n);
+        for (int k = 0; k < n; k++) {
+            X.row(k) = cubic_row(vs[k]).transpose();
+            y(k) = ts[k] - vs[k];
+        }
+        // Conditioned only when the element saw enough distinct levels: the faces give -1, 0, +1.
+        Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(X);
+        if (qr.rank() < 4) return "nonlinearity fit of element " + std::to_string(i) + ": too few distinct positions";
+        const Eigen::Vector4d cf = qr.solve(y);
+        for (int k = 0; k < 4; k++) c.acc_nonlin[i][k] = cf(k);
+        out.nl_v[i] = vs;
+        out.nl_rms[i] = std::sqrt((X * cf - y).squaredNorm() / n);
+    }
+    c.have_nonlin = true;
+    out.nonlin = true;
+    return "";
+}
+
 } // namespace
 
 std::string station_record(const std::vector<Soak> &soaks, const calrec_binding &id, StationOut &out)
@@ -53,6 +94,10 @@ std::string station_record(const std::vector<Soak> &soaks, const calrec_binding 
         }
     }
     const Eigen::Matrix3d M = P.inverse();
+    if (!amb.sweep.empty()) {
+        const std::string e = fit_nonlinearity(amb, P, c, out);
+        if (!e.empty()) return e;
+    }
     for (int i = 0; i < 3; i++) {
         c.acc_offset[i] = amb.six.acc_offset[i] / kQ16;
         c.acc_gain[i] = amb.six.acc_gain[i] / kQ30;
@@ -138,6 +183,30 @@ Budget derive_budget(const sim_calpart_params &type, const StationOut &st, doubl
     }
     out.char_nonlin_g = nl;
 
+    // With the sweep: what the record's cubic leaves of the part type's nonlinearity, and the
+    // fit's own noise (k sigma_fit), both within +-max_slope.
+    if (st.nonlin) {
+        double resid = 0.0, fitsd = 0.0;
+        const double sig_pt = sigma * std::sqrt(2.0 / static_cast<double>(n_face));
+        for (int a = 0; a < 3; a++) {
+            const int32_t *cq = st.rec.acc_nonlin[a];
+            const std::vector<double> &vs = st.nl_v[a];
+            Eigen::MatrixXd X(static_cast<Eigen::Index>(vs.size()), 4);
+            for (size_t r = 0; r < vs.size(); r++) X.row(static_cast<Eigen::Index>(r)) = cubic_row(vs[r]).transpose();
+            const Eigen::Matrix4d cov = (X.transpose() * X).inverse();
+            for (int i = 0; i <= 1000; i++) {
+                const double x = -xmax + 2.0 * xmax * i / 1000.0;
+                const double nl2 = type.acc_nl2[a], nl3 = type.acc_nl3[a];
+                const double v = (x + nl2 * x * x + nl3 * x * x * x - nl2) / (1.0 + nl3);
+                const double y = v + cq[0] / kQ30 + v * (cq[1] / kQ30 + v * (cq[2] / kQ30 + v * (cq[3] / kQ30)));
+                resid = std::max(resid, std::fabs(y - x));
+                fitsd = std::max(fitsd, std::sqrt(cubic_row(v).dot(cov * cubic_row(v))));
+            }
+        }
+        out.resid_nonlin_g = resid;
+        out.fit_nonlin_g = k * sig_pt * fitsd;
+    }
+
     // Temperature: the record's models against the part type's flip line, both branches.
     double tres = 0.0, sres = 0.0, sdrift = 0.0;
     const double tlo = st.tcal ? st.t_cold - margin : SIM_CALPART_T_MIN;
@@ -171,7 +240,7 @@ Budget derive_budget(const sim_calpart_params &type, const StationOut &st, doubl
     const double arith = 4.0 / kQ16; // cal_acc_apply: <= 3.5 LSB Q16 (cal.h)
     const double offset = k * sigma / std::sqrt(n) + arith;
     const double sens = k * sigma / std::sqrt(2.0 * n) + (st.tcal ? sres : 0.0);
-    const double nonlin = std::max(kSeedNonlin, nl);
+    const double nonlin = st.nonlin ? out.resid_nonlin_g + out.fit_nonlin_g : std::max(kSeedNonlin, nl);
     const double tcomp = st.tcal ? tres : kSeedTempUncomp;
 
     app_budget &b = out.b;
@@ -194,8 +263,14 @@ Budget derive_budget(const sim_calpart_params &type, const StationOut &st, doubl
     out.terms.back().origin = buf;
     std::snprintf(buf, sizeof buf, "flip offset and cross-axis from %u-sample faces, k sigma/sqrt(N), + 4 LSB arithmetic", n_face);
     out.terms.push_back({"offset", offset, buf});
-    std::snprintf(buf, sizeof buf, "not corrected: max(seed 000 10 mg, part type %.2f mg within +-%.0f deg)",
-                  nl * 1e3, max_slope_deg);
+    if (st.nonlin) {
+        std::snprintf(buf, sizeof buf, "cubic from faces + %zu-point tilt sweep: part type residual %.3f mg + k sigma_fit %.3f mg "
+                      "within +-%.0f deg (uncorrected %.2f mg)", st.nl_v[0].size() - CAL_FACES, out.resid_nonlin_g * 1e3,
+                      out.fit_nonlin_g * 1e3, max_slope_deg, nl * 1e3);
+    } else {
+        std::snprintf(buf, sizeof buf, "not corrected: max(seed 000 10 mg, part type %.2f mg within +-%.0f deg)",
+                      nl * 1e3, max_slope_deg);
+    }
     out.terms.push_back({"nonlinearity", nonlin, buf});
     if (st.tcal) {
         std::snprintf(buf, sizeof buf, "three-point models vs the part type over %.1f..%.1f degC (+-%.1f margin), "

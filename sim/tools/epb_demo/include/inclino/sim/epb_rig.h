@@ -122,6 +122,11 @@ uint32_t epb_rig_rate_mhz(const struct epb_rig *r);
 /* Station physics: the part on `face` (enum cal_face) at temp_c. */
 void epb_rig_station(struct epb_rig *r, int face, double temp_c);
 
+/* Station physics: the part held still at temp_c, feeling the specific force dir (g, part
+ * frame; a unit vector for a part at rest), e.g. on the station's tilt table during the
+ * nonlinearity sweep. */
+void epb_rig_station_dir(struct epb_rig *r, const double dir[3], double temp_c);
+
 /* Vehicle physics from now on (scenario time 0 = now): the car parks (or drives, see v). */
 void epb_rig_park(struct epb_rig *r, const struct epb_rig_vehicle *v);
 

@@ -33,7 +33,8 @@ struct epb_rig {
     uint8_t flash_mem[2048];
     /* physics */
     enum epb_rig_mode mode;
-    int face;                /* enum cal_face (station) */
+    int face;                /* enum cal_face (station), or -1: held at station_dir */
+    double station_dir[3];   /* station: the specific force the part feels, g (part frame) */
     double station_temp_c;
     struct epb_rig_vehicle veh;
     uint64_t t0_ns;          /* start of the vehicle scenario */
