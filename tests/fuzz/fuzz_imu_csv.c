@@ -14,7 +14,7 @@
  */
 #include "fuzz_mut.h"
 #include "inclino/error.h"
-#include "inclino/imu_csv.h"
+#include "inclino/sim/imu_csv.h"
 #include "unit.h"
 
 #include <math.h>

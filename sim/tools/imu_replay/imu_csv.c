@@ -1,5 +1,5 @@
-/* imu_csv.c - the recorded-IMU CSV reader (see inclino/imu_csv.h, docs/imu-replay.md). */
-#include "inclino/imu_csv.h"
+/* imu_csv.c - the recorded-IMU CSV reader (see inclino/sim/imu_csv.h, docs/imu-replay.md). */
+#include "inclino/sim/imu_csv.h"
 
 #include <errno.h>
 #include <math.h>

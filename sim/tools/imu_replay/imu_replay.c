@@ -27,7 +27,7 @@
 #include "inclino/adis_imu.h"
 #include "inclino/app.h"
 #include "inclino/calstore.h"
-#include "inclino/imu_csv.h"
+#include "inclino/sim/imu_csv.h"
 #include "inclino/sca3000.h"
 #include "inclino/tilt.h"
 
@@ -111,7 +111,7 @@ static void quantise_row(const struct part *p, const double *v, bool have_temp, 
     if (gsat) s->flags |= APP_S_GYRO_SAT;
 }
 
-/* ---- CSV: inclino/imu_csv.h ----------------------------------------------------------------- */
+/* ---- CSV: inclino/sim/imu_csv.h ----------------------------------------------------------------- */
 
 static int read_table(const char *path, struct imu_csv_table *t, char *msg, size_t msg_len)
 {
