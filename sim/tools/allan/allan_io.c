@@ -13,48 +13,117 @@
 
 #include "inclino/error.h"
 
-#define LINE_MAX_CHARS 4096
+/*
+ * The CSV reader. Found by the mutation sweep (tests/fuzz/fuzz_allan_csv.c, docs/traces.md), each
+ * kept there as a named regression input: with fgets a NUL byte in an unterminated last line cut
+ * it silently ("2,3\0 9" read as 2,3); a '\r' inside a line ended it ("1\r5" read as 1); a first
+ * data row whose value was NaN or garbled ("0,nan", "2..5;-15;100") was taken for a header and
+ * dropped; a value overflowing after the scale was stored as infinity; times whose span overflows
+ * (-1e308, 0, 1e308) gave an infinite dt that passed the uniformity test (inf - inf is NaN, and a
+ * NaN comparison is false); a non-uniform time named the file's last line instead of the step.
+ */
 
-/* Field idx (0-based) of line as a double. Returns 1 on success, 0 when the field is missing,
- * -1 when it is present but not a number. */
-static int field(const char *line, unsigned idx, double *v)
+/* One line into buf (the '\n' kept out, trailing blanks and '\r' cut). Bytes are counted here,
+ * not by fgets, so a NUL byte cannot end a line unseen. 1: a line; 0: end of file; -1: longer
+ * than SIM_ALLAN_CSV_LINE_MAX; -2: a NUL byte; -3: read error. */
+static int read_line(FILE *f, char *buf, size_t cap)
 {
-    const char *p = line;
-    unsigned i = 0;
-    for (;;) {
-        const char *start;
-        while (*p == ' ' || *p == '\t') {
-            p++;
-        }
-        start = p;
-        while (*p != '\0' && *p != ',' && *p != ';' && *p != ' ' && *p != '\t' && *p != '\r' &&
-               *p != '\n') {
-            p++;
-        }
-        if (p == start && (*p == '\0' || *p == '\r' || *p == '\n')) {
-            return 0;
-        }
-        if (i == idx) {
-            char buf[128];
-            char *end;
-            size_t len = (size_t)(p - start);
-            if (len == 0u || len >= sizeof(buf)) {
-                return -1;
-            }
-            memcpy(buf, start, len);
-            buf[len] = '\0';
-            *v = strtod(buf, &end);
-            return (*end == '\0' && isfinite(*v)) ? 1 : -1;
-        }
-        i++;
-        /* one separator (a run of blanks counts as one; ',' / ';' each end one field) */
-        while (*p == ' ' || *p == '\t') {
-            p++;
-        }
-        if (*p == ',' || *p == ';') {
-            p++;
+    size_t n = 0;
+    int c, r = 1;
+    while ((c = getc(f)) != EOF && c != '\n') {
+        if (c == '\0') {
+            r = -2;
+        } else if (n + 1u >= cap) {
+            r = r == 1 ? -1 : r;
+        } else {
+            buf[n++] = (char)c;
         }
     }
+    if (c == EOF && ferror(f)) {
+        return -3;
+    }
+    if (c == EOF && n == 0u && r == 1) {
+        return 0;
+    }
+    while (n > 0u && (buf[n - 1u] == ' ' || buf[n - 1u] == '\t' || buf[n - 1u] == '\r')) {
+        n--;
+    }
+    buf[n] = '\0';
+    return r;
+}
+
+/* The next field of a line from *p: blanks before it skipped; it ends at ',' ';' blank or the
+ * end; then one separator is consumed (a run of blanks counts as one, ',' / ';' each end one
+ * field, so ",," holds an empty field). Returns false when the line has no more fields. */
+static bool next_field(const char **p, const char **start, size_t *len)
+{
+    const char *q = *p;
+    while (*q == ' ' || *q == '\t') {
+        q++;
+    }
+    if (*q == '\0') {
+        return false;
+    }
+    *start = q;
+    while (*q != '\0' && *q != ',' && *q != ';' && *q != ' ' && *q != '\t') {
+        q++;
+    }
+    *len = (size_t)(q - *start);
+    while (*q == ' ' || *q == '\t') {
+        q++;
+    }
+    if (*q == ',' || *q == ';') {
+        q++;
+    }
+    *p = q;
+    return true;
+}
+
+/* 1: a finite number read whole; 0: a number that is not finite (NaN, inf, overflow);
+ * -1: not a number (empty, longer than SIM_ALLAN_CSV_FIELD_MAX, or text after the number). */
+static int number(const char *s, size_t len, double *v)
+{
+    char buf[SIM_ALLAN_CSV_FIELD_MAX + 1];
+    char *end;
+    if (len == 0u || len > SIM_ALLAN_CSV_FIELD_MAX) {
+        return -1;
+    }
+    memcpy(buf, s, len);
+    buf[len] = '\0';
+    *v = strtod(buf, &end);
+    if (*end != '\0') {
+        return -1;
+    }
+    return isfinite(*v) ? 1 : 0;
+}
+
+/* Field idx (0-based) of line as a finite double: 1, or 0 when missing or not such a number. */
+static int field(const char *line, unsigned idx, double *v)
+{
+    const char *p = line, *start = NULL;
+    size_t len = 0;
+    unsigned i;
+    for (i = 0; i <= idx; i++) {
+        if (!next_field(&p, &start, &len)) {
+            return 0;
+        }
+    }
+    return number(start, len, v) == 1;
+}
+
+/* A header names every column: each field non-empty and not a number (NaN and inf count as
+ * numbers), so a first data row with one bad field is a bad row, not a header. */
+static bool is_header(const char *line)
+{
+    const char *p = line, *start = NULL;
+    size_t len = 0;
+    double v;
+    while (next_field(&p, &start, &len)) {
+        if (len == 0u || number(start, len, &v) >= 0) {
+            return false;
+        }
+    }
+    return true;
 }
 
 static bool blank_or_comment(const char *line)
@@ -66,48 +135,82 @@ static bool blank_or_comment(const char *line)
     return *p == '\0' || *p == '#';
 }
 
+struct time_sample {
+    double t;
+    size_t line;
+};
+
+/* The time rule (allan.h): 0 when uniform (*dt_s = the mean step), else the line to name. */
+static size_t check_time(const struct time_sample *ts, size_t cnt, double *dt_s)
+{
+    const double step = (ts[cnt - 1u].t - ts[0].t) / (double)(cnt - 1u);
+    size_t k, worst = 0;
+    double worst_dev = 0.0;
+    if (!(isfinite(step) && step > 0.0)) {
+        /* time not increasing (or its span overflows): the first step that is not a finite
+         * increase, else the last sample */
+        for (k = 1; k < cnt; k++) {
+            const double d = ts[k].t - ts[k - 1u].t;
+            if (!(d > 0.0) || !isfinite(d)) {
+                return ts[k].line;
+            }
+        }
+        return ts[cnt - 1u].line;
+    }
+    for (k = 1; k < cnt; k++) {
+        const double dev = fabs((ts[k].t - ts[k - 1u].t) - step);
+        if (dev > 0.01 * step && dev > worst_dev) {
+            worst_dev = dev;
+            worst = k;
+        }
+    }
+    if (worst != 0u) {
+        return ts[worst].line; /* the step farthest from the mean: the jump, the gap, the copy */
+    }
+    *dt_s = step;
+    return 0;
+}
+
 int sim_allan_read_csv(FILE *f, unsigned col, int time_col, double scale, double **y, size_t *n,
                        double *dt_s, size_t *bad_line)
 {
-    char line[LINE_MAX_CHARS];
-    double *buf = NULL, *tbuf = NULL;
+    char line[SIM_ALLAN_CSV_LINE_MAX + 1];
+    double *buf = NULL;
+    struct time_sample *tbuf = NULL;
     size_t cap = 0, cnt = 0, lineno = 0;
     bool first = true;
-    int err = INC_OK;
+    int err = INC_OK, got;
     if (f == NULL || y == NULL || n == NULL || dt_s == NULL || bad_line == NULL) {
         return INC_ERR_NULL;
     }
     *y = NULL;
     *n = 0;
     *bad_line = 0;
-    while (fgets(line, sizeof(line), f) != NULL) {
+    while ((got = read_line(f, line, sizeof(line))) != 0) {
         double v, t = 0.0;
-        int fv, ft = 1;
         lineno++;
-        if (strchr(line, '\n') == NULL && !feof(f)) {
-            err = INC_ERR_FORMAT; /* line too long */
+        if (got < 0) {
+            err = got == -3 ? INC_ERR_IO : INC_ERR_FORMAT; /* too long, NUL byte, read error */
             break;
         }
         if (blank_or_comment(line)) {
             continue;
         }
-        fv = field(line, col, &v);
-        if (time_col >= 0) {
-            ft = field(line, (unsigned)time_col, &t);
-        }
-        if (fv != 1 || ft != 1) {
-            if (first && fv != 0 && (time_col < 0 || ft != 0)) {
-                first = false; /* a header line */
+        if (first) {
+            first = false;
+            if (is_header(line)) {
                 continue;
             }
+        }
+        if (field(line, col, &v) != 1 || (time_col >= 0 && field(line, (unsigned)time_col, &t) != 1) ||
+            !isfinite(v * scale)) {
             err = INC_ERR_FORMAT;
             break;
         }
-        first = false;
         if (cnt == cap) {
             const size_t ncap = cap == 0u ? 4096u : cap * 2u;
             double *nb = realloc(buf, ncap * sizeof(*nb));
-            double *nt = time_col >= 0 ? realloc(tbuf, ncap * sizeof(*nt)) : NULL;
+            struct time_sample *nt = time_col >= 0 ? realloc(tbuf, ncap * sizeof(*nt)) : NULL;
             if (nb != NULL) {
                 buf = nb;
             }
@@ -122,33 +225,19 @@ int sim_allan_read_csv(FILE *f, unsigned col, int time_col, double scale, double
         }
         buf[cnt] = v * scale;
         if (time_col >= 0) {
-            tbuf[cnt] = t;
+            tbuf[cnt].t = t;
+            tbuf[cnt].line = lineno;
         }
         cnt++;
     }
-    if (err == INC_OK && ferror(f)) {
-        err = INC_ERR_IO;
-    }
-    if (err == INC_OK && cnt == 0u) {
-        err = INC_ERR_FORMAT;
+    if (err == INC_OK && (cnt == 0u || (time_col >= 0 && cnt < 2u))) {
+        err = INC_ERR_FORMAT; /* no data: *bad_line = the last line */
     }
     if (err == INC_OK && time_col >= 0) {
-        if (cnt < 2u) {
+        const size_t at = check_time(tbuf, cnt, dt_s);
+        if (at != 0u) {
+            lineno = at;
             err = INC_ERR_FORMAT;
-        } else {
-            const double step = (tbuf[cnt - 1u] - tbuf[0]) / (double)(cnt - 1u);
-            size_t k;
-            if (!(step > 0.0)) {
-                err = INC_ERR_FORMAT;
-            }
-            for (k = 1; err == INC_OK && k < cnt; k++) {
-                if (fabs((tbuf[k] - tbuf[k - 1u]) - step) > 0.01 * step) {
-                    err = INC_ERR_FORMAT;
-                }
-            }
-            if (err == INC_OK) {
-                *dt_s = step;
-            }
         }
     }
     free(tbuf);

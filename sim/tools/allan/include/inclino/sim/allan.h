@@ -77,14 +77,25 @@ int sim_allan_readoff(const struct sim_allan_point *pts, size_t count, double ma
 double sim_allan_interp(const struct sim_allan_point *pts, size_t count, double tau_s);
 
 /*
- * Read one numeric column of a CSV/whitespace table (separators ',', ';', tab, space; '#' starts
- * a comment; a first line that is not numeric is a header). col is 0-based. With time_col >= 0,
- * the interval is taken from that column (seconds): it must increase uniformly (every step
- * within 1 % of the mean step), else INC_ERR_FORMAT. Each value is multiplied by scale.
+ * Read one numeric column of a CSV/whitespace table. Lines: at most SIM_ALLAN_CSV_LINE_MAX
+ * characters, no NUL byte; trailing blanks and '\r' (CRLF) ignored; blank lines and lines whose
+ * first non-blank is '#' skipped. Fields: separated by ',' or ';' (each ends one field, so ",,"
+ * holds an empty one) or a run of blanks/tabs; nothing after the last separator is no field. The
+ * first content line is a header when every field is a name (non-empty, not a number); any other
+ * line is a data row. col is 0-based; the read fields (col and, with time_col >= 0, the time) must
+ * be finite numbers read whole by strtod (at most SIM_ALLAN_CSV_FIELD_MAX characters); other
+ * fields are not looked at. Each value is multiplied by scale and must stay finite. With
+ * time_col >= 0 the interval comes from that column (seconds): at least 2 rows, the mean step
+ * (last - first) / (n - 1) finite and > 0, every step within 1 % of it; *dt_s = the mean step.
  * On success *y is malloc'ed (caller frees), *n >= 1, *dt_s is set when time_col >= 0.
- * Errors: INC_ERR_NULL, INC_ERR_FORMAT (bad number, missing column, non-uniform time; *bad_line
- * = the 1-based line), INC_ERR_NO_SPACE (out of memory), INC_ERR_IO (read error).
+ * Errors: INC_ERR_NULL; INC_ERR_FORMAT with *bad_line = the 1-based line: a line too long or
+ * holding a NUL, a bad or missing read field, a value overflowing after the scale; for a
+ * non-uniform time the line whose step from the previous row is farthest from the mean (time not
+ * increasing: the first row not after its predecessor); no data rows: the last line.
+ * INC_ERR_NO_SPACE (out of memory), INC_ERR_IO (read error).
  */
+#define SIM_ALLAN_CSV_LINE_MAX 4095u  /* characters per line, the '\n' not counted */
+#define SIM_ALLAN_CSV_FIELD_MAX 127u  /* characters of a read field */
 int sim_allan_read_csv(FILE *f, unsigned col, int time_col, double scale, double **y, size_t *n,
                        double *dt_s, size_t *bad_line);
 
