@@ -124,7 +124,7 @@ static void ref_read(const char *text, size_t len, const struct seed_opts *o, st
     r->line = calloc(lines + 1u, sizeof(size_t));
     if (r->y == NULL || r->t == NULL || r->line == NULL) exit(2);
     for (l = 1; l <= lines; l++) {
-        size_t nf, k;
+        size_t nf;
         double v = 0.0, t = 0.0;
         ref_get_line(text, len, l, &ln);
         if (ln.nul || ln.too_long) {
@@ -134,7 +134,7 @@ static void ref_read(const char *text, size_t len, const struct seed_opts *o, st
         if (ref_skip(ln.text)) continue;
         nf = ref_fields(ln.text, fs, fl);
         if (first) {
-            size_t names = 0;
+            size_t names = 0, k;
             first = false;
             for (k = 0; k < nf; k++) names += ref_number(ln.text + fs[k], fl[k], &v) < 0 && fl[k] > 0;
             if (names == nf) continue; /* the header */
@@ -271,14 +271,14 @@ static size_t must_fail(const struct seed_info *si, const struct seed_opts *o, c
     }
     case FUZZ_TOKEN: {
         const char *t = fuzz_tokens[c->arg];
-        double nv, ov;
+        double nv;
         l = seed_field_at(si, c->where, &f, &fs, &fe);
         if (!seed_is_data_line(si, l) || f == SIZE_MAX || !is_read(o, f)) return 0;
         if (strcmp(t, "nan") == 0 || strcmp(t, "inf") == 0 || strcmp(t, "-inf") == 0 || t[0] == '\0') return l;
         nv = strtod(t, NULL);
         if (f == o->col && !isfinite(nv * o->scale)) return l;
         if (o->time_col >= 0 && f == (size_t)o->time_col) {
-            ov = strtod(si->seed + fs, NULL);
+            const double ov = strtod(si->seed + fs, NULL);
             if (fabs(nv - ov) > 0.5 * si->step) return SIZE_MAX;
         }
         return 0;
@@ -339,7 +339,7 @@ static void check_case(const struct seed_info *si, const struct seed_opts *o, un
     struct ref_result ref;
     static double sentinel;
     double *y = &sentinel, dt = -7.0;
-    size_t n = 99, bad = 0, want, i;
+    size_t n = 99, bad = 0, want;
     const int err = read_buf(c->data, c->len, o, &y, &n, &dt, &bad);
     ref_read(c->data, c->len, o, &ref);
     n_cases++;
@@ -347,7 +347,7 @@ static void check_case(const struct seed_info *si, const struct seed_opts *o, un
     if (err == INC_OK) {
         bool same = ref.ok && n == ref.n && y != NULL && (o->time_col < 0 ? dt == -7.0 : dt == ref.dt);
         n_ok++;
-        for (i = 0; same && i < n; i++) same = y[i] == ref.y[i] && isfinite(y[i]);
+        for (size_t i = 0; same && i < n; i++) same = y[i] == ref.y[i] && isfinite(y[i]);
         if (o->time_col >= 0 && same) same = isfinite(dt) && dt > 0.0;
         if (!same) {
             FAILC("accepted (%zu samples, dt %g); the reference %s (%zu samples, line %zu)", n, dt,
