@@ -13,6 +13,7 @@
 
 #include "inclino/avg.h"
 #include "inclino/still.h"
+#include "unit.h"
 
 #define BENCH_N 1024u
 #define SYST_CSR (*(volatile uint32_t *)0xE000E010u)
@@ -101,9 +102,7 @@ int main(void)
     bool f = false, r = false;
     for (i = 0; i < BENCH_N; i++) {
         unsigned k;
-        s ^= s << 13;
-        s ^= s >> 17;
-        s ^= s << 5;
+        (void)unit_rand32(&s);
         in[i] = (int32_t)(s >> 18) - 8192;
         for (k = 0; k < 6u; k++) {
             in3[i][k] = (int32_t)((s >> (k * 4u)) & 31u) - 16 + (k == 5u ? 1000 : 0);

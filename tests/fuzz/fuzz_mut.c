@@ -5,6 +5,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "unit.h"
+
 const unsigned char fuzz_bytes[FUZZ_N_BYTES] = {0x00, '\n', ',', '-', '9', 0xFF, ' ', '.', 'e', 'n'};
 const char *const fuzz_tokens[FUZZ_N_TOKENS] = {
     "1e308", "-1e308", "99999999999999999999", "-2147483649", "18446744073709551616", "nan",
@@ -80,16 +82,6 @@ static void put(struct fuzz_case *c, const char *a, size_t na, const char *b, si
     memcpy(c->data + na + nb, d, nd);
     c->len = na + nb + nd;
     c->data[c->len] = '\0';
-}
-
-static uint32_t xorshift32(uint32_t *s)
-{
-    uint32_t x = *s;
-    x ^= x << 13;
-    x ^= x >> 17;
-    x ^= x << 5;
-    *s = x;
-    return x;
 }
 
 enum fuzz_family fuzz_mutate(const char *seed, size_t len, unsigned long k, size_t stride,
@@ -197,8 +189,8 @@ enum fuzz_family fuzz_mutate(const char *seed, size_t len, unsigned long k, size
         unsigned m;
         put(out, seed, len, "", 0, "", 0);
         for (m = 0; m < 3u; m++) {
-            const size_t pos = xorshift32(&st) % len;
-            out->data[pos] = (char)(xorshift32(&st) & 0xFFu);
+            const size_t pos = unit_rand32(&st) % len;
+            out->data[pos] = (char)(unit_rand32(&st) & 0xFFu);
         }
         out->where = 0;
         out->arg = (unsigned)k;

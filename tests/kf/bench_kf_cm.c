@@ -15,6 +15,7 @@
 #include "inclino/kf.h"
 #include "inclino/kf_adapt.h"
 #include "inclino/tilt.h"
+#include "unit.h"
 
 #define BENCH_N 32
 #define WARM 200
@@ -142,10 +143,7 @@ int main(void)
     static struct tilt_config tc;
     const int64_t p1 = KF_P_ONE_Q16, p2[4] = {KF_P_ONE_Q16, 0, 0, KF_P_ONE_Q16};
     for (i = 0; i < BENCH_N + WARM; i++) {
-        s ^= s << 13;
-        s ^= s >> 17;
-        s ^= s << 5;
-        in_z[i] = (int32_t)(s % 1311u) - 655; /* +-0.01 g / deg of noise */
+        in_z[i] = (int32_t)(unit_rand32(&s) % 1311u) - 655; /* +-0.01 g / deg of noise */
     }
     (void)avg_moving_init(&ma, ma_line, 82u, 82u);
     (void)kf_init(&f1, 1u, 0, &p1);
