@@ -2,25 +2,11 @@
  * adis_offset_counts: the user-offset encoding the ADIS drivers share (drivers/adis). Exact
  * vectors for each register it serves (ADIS16255 GYRO_OFF, ADIS1636x/1640x XGYRO_OFF, XACCL_OFF),
  * ties, the saturation edges of every width, bad arguments, and a random sweep against an
- * exact reference written here (floor division, then the tie rule). Integer only: it also runs
- * on rv32imac.
+ * exact reference (unit_round_div, unit.h: floor division, then the tie rule). Integer only: it
+ * also runs on rv32imac.
  */
 #include "inclino/adis.h"
 #include "unit.h"
-
-/* round(n / d), ties away from zero, for d > 0, by floor division (not the code under test). */
-static int64_t ref_round(int64_t n, int64_t d)
-{
-    int64_t q = n / d, r = n % d;
-    if (r < 0) {
-        q -= 1;
-        r += d;
-    }
-    if (2 * r > d || (2 * r == d && n >= 0)) {
-        q += 1;
-    }
-    return q;
-}
 
 static void test_registers(void)
 {
@@ -104,7 +90,7 @@ static void test_random(void)
         const uint32_t den = (unit_rand32(&s) >> (unit_rand32(&s) % 32u)) | 1u;
         const unsigned bits = 2u + unit_rand32(&s) % 15u;
         const int64_t hi = ((int64_t)1 << (bits - 1u)) - 1, lo = -hi - 1;
-        const int64_t q = ref_round(num, den);
+        const int64_t q = unit_round_div(num, den);
         const int64_t want = q > hi ? hi : (q < lo ? lo : q);
         bool sat = false;
         const int32_t got = adis_offset_counts(num, den, bits, &sat);

@@ -1,6 +1,7 @@
 /*
  * fx_test_int.h - the integer-only part of the tests/fx helpers: sweep density, a deterministic
- * generator and exact integer rounding references (written independently of firmware/fx).
+ * generator and exact integer references (written independently of firmware/fx; the rounding
+ * division is unit_round_div in unit.h).
  * No libm and no floating point, so the tests that use only this header also run on rv32imac,
  * whose test board has no C library beyond a printf shim.
  */
@@ -37,20 +38,6 @@ static inline int32_t fxt_rand_scaled(uint32_t *state)
 static inline int32_t fxt_i32(uint32_t u)
 {
     return (u & 0x80000000u) ? (int32_t)(u - 0x80000000u) + INT32_MIN : (int32_t)u;
-}
-
-/* Exact round(n / d), ties away from zero, for d > 0, by a route independent of firmware/fx:
- * floor division with a non-negative remainder, then compare 2*rem with d. |n| < 2^62. */
-static inline int64_t fxt_round_div(int64_t n, int64_t d)
-{
-    int64_t q = n / d, rem = n % d;
-    if (rem < 0) {
-        q -= 1;
-        rem += d;
-    }
-    /* n/d = q + rem/d with 0 <= rem < d */
-    if (2 * rem > d || (2 * rem == d && n >= 0)) q += 1;
-    return q;
 }
 
 static inline int32_t fxt_sat(int64_t v)

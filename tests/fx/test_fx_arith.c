@@ -120,16 +120,16 @@ static void test_rounding_shifts(void)
     for (i = 0; i < N_EDGE; i++) {
         for (s = 0; s <= 31u; s++) {
             int32_t x = edge32[i];
-            CHECK_EQ_INT(fx_rshift_round32(x, s), fxt_round_div(x, (int64_t)1 << s));
+            CHECK_EQ_INT(fx_rshift_round32(x, s), unit_round_div(x, (int64_t)1 << s));
         }
     }
     for (k = 0; k < N_RANDOM / 16; k++) {
         int32_t x = fxt_rand_scaled(&st);
         int64_t y = (int64_t)fxt_rand_scaled(&st) * (int64_t)(unit_rand32(&st) >> 2);
         s = unit_rand32(&st) % 32u;
-        CHECK_EQ_INT(fx_rshift_round32(x, s), fxt_round_div(x, (int64_t)1 << s));
+        CHECK_EQ_INT(fx_rshift_round32(x, s), unit_round_div(x, (int64_t)1 << s));
         s = unit_rand32(&st) % 62u;
-        CHECK_EQ_INT(fx_rshift_round64(y, s), fxt_round_div(y, (int64_t)1 << s));
+        CHECK_EQ_INT(fx_rshift_round64(y, s), unit_round_div(y, (int64_t)1 << s));
         /* odd symmetry */
         if (x != INT32_MIN) CHECK_EQ_INT(fx_rshift_round32(-x, s % 32u), -fx_rshift_round32(x, s % 32u));
     }
@@ -146,7 +146,7 @@ static void test_rounding_shifts(void)
 
 static int32_t ref_mul(int32_t a, int32_t b, unsigned s)
 {
-    return fxt_sat(fxt_round_div((int64_t)a * b, (int64_t)1 << s));
+    return fxt_sat(unit_round_div((int64_t)a * b, (int64_t)1 << s));
 }
 
 static void test_multiply(void)
@@ -208,7 +208,7 @@ static int64_t exact_div(int32_t num, int32_t den, unsigned f)
         n = -n;
         d = -d;
     }
-    return fxt_round_div(n, d);
+    return unit_round_div(n, d);
 }
 
 static int32_t ref_div(int32_t num, int32_t den, unsigned f)
@@ -361,7 +361,7 @@ static void test_divide64(void)
         const int64_t num = rand_i64(&st);
         const uint32_t den = (unit_rand32(&st) >> (unit_rand32(&st) % 32u)) | 1u;
         const int32_t q = fx_div64(num, den);
-        if (q != fxt_sat(fxt_round_div(num, den))) bad++;
+        if (q != fxt_sat(unit_round_div(num, den))) bad++;
         if (q != INT32_MIN && q != INT32_MAX && fx_div64(-num, den) != -q) badodd++;
     }
     CHECK_EQ_INT(bad, 0);
@@ -492,9 +492,9 @@ static void test_accumulate(void)
             CHECK_OK(fx_sum_add(&acc, arr[i]));
         }
         CHECK_OK(fx_sum_mean(&acc, &m));
-        CHECK_EQ_INT(m, fxt_round_div(sum, 1000));
+        CHECK_EQ_INT(m, unit_round_div(sum, 1000));
         CHECK_OK(fx_mean_i32(arr, 1000, &m));
-        CHECK_EQ_INT(m, fxt_round_div(sum, 1000));
+        CHECK_EQ_INT(m, unit_round_div(sum, 1000));
     }
 }
 

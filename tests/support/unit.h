@@ -52,6 +52,22 @@ static inline uint32_t unit_rand32(uint32_t *state)
     return x;
 }
 
+/* Exact round(n / d), ties away from zero, for d > 0 and |n| < 2^62: a reference for tests,
+ * independent of firmware/fx (floor division with a non-negative remainder, then compare
+ * 2 * rem with d). */
+static inline int64_t unit_round_div(int64_t n, int64_t d)
+{
+    int64_t q = n / d, rem = n % d;
+    if (rem < 0) {
+        q -= 1;
+        rem += d;
+    }
+    if (2 * rem > d || (2 * rem == d && n >= 0)) {
+        q += 1;
+    }
+    return q;
+}
+
 extern unsigned unit_checks;
 extern unsigned unit_failures;
 
