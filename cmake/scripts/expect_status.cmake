@@ -14,7 +14,7 @@ endif()
 
 # Everything after the script's own path is the command.
 include(${CMAKE_CURRENT_LIST_DIR}/script_command.cmake)
-if(NOT cmd)
+if(cmd STREQUAL "") # not if(NOT cmd): a command named "false", "off", "0"... reads as false
   message(FATAL_ERROR "expect_status.cmake: no command given")
 endif()
 

@@ -13,7 +13,7 @@ endif()
 string(REPLACE "~" ";" MATCH "${MATCH}")
 string(REPLACE "~" ";" NOMATCH "${NOMATCH}")
 include(${CMAKE_CURRENT_LIST_DIR}/../../cmake/scripts/script_command.cmake)
-if(NOT cmd)
+if(cmd STREQUAL "") # not if(NOT cmd): a command named "false", "off", "0"... reads as false
   message(FATAL_ERROR "run_demo.cmake: no command given")
 endif()
 execute_process(COMMAND ${cmd} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err
