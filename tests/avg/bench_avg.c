@@ -9,6 +9,7 @@
 
 #include "inclino/avg.h"
 #include "inclino/still.h"
+#include "bench_avg_cfg.h"
 
 #define BENCH_N 100000u
 
@@ -65,15 +66,7 @@ int main(int argc, char **argv)
         }
     } else if (strcmp(k, "still") == 0) {
         struct still_cfg cfg;
-        memset(&cfg, 0, sizeof(cfg));
-        cfg.window = 819;
-        cfg.windows_required = 3;
-        cfg.gyro_var_max = 409;
-        cfg.accel_var_max = 43;
-        cfg.gyro_mean_max = 60;
-        cfg.accel_one_g = 1000;
-        cfg.accel_norm_tol = 50;
-        cfg.accel_drift_max = 3;
+        bench_still_cfg(&cfg);
         (void)still_init(&s, &cfg);
         for (i = 0; i < BENCH_N; i++) {
             const int32_t g[3] = {next() >> 6, next() >> 6, next() >> 6};
@@ -81,8 +74,7 @@ int main(int argc, char **argv)
             (void)still_push(&s, g, a, &f);
         }
     } else if (strcmp(k, "thermal") == 0) {
-        const struct still_thermal_cfg tc = {819, 30, 1};
-        (void)still_thermal_init(&th, &tc);
+        (void)still_thermal_init(&th, &bench_thermal_cfg);
         for (i = 0; i < BENCH_N; i++) {
             (void)still_thermal_push(&th, next() >> 10, &f);
         }

@@ -13,6 +13,7 @@
 
 #include "inclino/avg.h"
 #include "inclino/still.h"
+#include "bench_avg_cfg.h"
 #include "unit.h"
 
 #define BENCH_N 1024u
@@ -147,15 +148,7 @@ int main(void)
 
     {
         struct still_cfg cfg;
-        memset(&cfg, 0, sizeof(cfg));
-        cfg.window = 819;
-        cfg.windows_required = 3;
-        cfg.gyro_var_max = 409;
-        cfg.accel_var_max = 43;
-        cfg.gyro_mean_max = 60;
-        cfg.accel_one_g = 1000;
-        cfg.accel_norm_tol = 50;
-        cfg.accel_drift_max = 3;
+        bench_still_cfg(&cfg);
         (void)still_init(&st, &cfg);
         ticks_reset();
         for (i = 0; i < BENCH_N; i++) {
@@ -169,8 +162,7 @@ int main(void)
         report("still_push(W=819,all_tests)", ticks(), t0);
     }
     {
-        const struct still_thermal_cfg tc = {819, 30, 1};
-        (void)still_thermal_init(&th, &tc);
+        (void)still_thermal_init(&th, &bench_thermal_cfg);
         ticks_reset();
         for (i = 0; i < BENCH_N; i++) {
             (void)empty_th(&th, in[i], &f);
