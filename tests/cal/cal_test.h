@@ -15,7 +15,6 @@
 
 /* CALT_DENSITY(full, reduced): the dense sweep on the host, a reduced one under QEMU (soft
  * float) and under ASan/UBSan (unit.h's UNIT_SIZE). */
-#define CALT_ON_TARGET UNIT_ON_TARGET
 #define CALT_DENSITY(full, reduced) UNIT_SIZE(full, reduced)
 
 #define CALT_Q16 65536.0

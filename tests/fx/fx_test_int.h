@@ -19,9 +19,6 @@
  * host-sanitize build (ASan + UBSan are ~5x slower; its job is finding undefined behaviour on
  * the same code paths, the bounds are proven by the dense host run).
  * FX_DENSITY(full, reduced) picks one; docs/fixed-point.md lists both per test. */
-#define FX_TEST_ON_TARGET UNIT_ON_TARGET
-#define FX_TEST_SANITIZED UNIT_SANITIZED
-#define FX_TEST_REDUCED UNIT_REDUCED
 #define FX_DENSITY(full, reduced) UNIT_SIZE(full, reduced)
 
 /* A random int32 with a random magnitude (2^0 .. 2^31) and sign, so that every scale is hit;
