@@ -177,11 +177,13 @@ int slope_estimate(const struct slope_cfg *cfg, const struct slope_input *in,
     ea = accel_bound(&cfg->budget, s, noise);
 
     if (cfg->method == SLOPE_SINGLE_AXIS) {
+        int32_t lo_d;
         theta = asin_of_g(s);
         /* asin is monotonic: the extremes of the box are its ends. */
         bound = absdiff(asin_of_g((int64_t)s + ea), theta);
-        if (absdiff(theta, asin_of_g((int64_t)s - ea)) > bound) {
-            bound = absdiff(theta, asin_of_g((int64_t)s - ea));
+        lo_d = absdiff(theta, asin_of_g((int64_t)s - ea));
+        if (lo_d > bound) {
+            bound = lo_d;
         }
         if ((int64_t)fx_uabs32(s) > (int64_t)FX_Q16_ONE + cfg->magnitude_tol_g) {
             flags |= SLOPE_F_MAGNITUDE;
