@@ -68,8 +68,9 @@ int slope_sigma_factor(uint32_t runs, fx_q16_t expected_q16, fx_q16_t *k)
 
 fx_q16_t slope_grade_pct(fx_q16_t deg)
 {
-    const fx_q30_t s = fx_sin_deg(deg), c = fx_cos_deg(deg);
+    fx_q30_t s, c;
     int64_t num, q, r;
+    fx_sincos_deg(deg, &s, &c); /* one quadrant reduction; same values as sin / cos */
     if (c == 0) {
         return s >= 0 ? INT32_MAX : INT32_MIN;
     }
