@@ -30,15 +30,10 @@ static int log2_exact(uint64_t v)
 /* round(sum / div), ties away from zero; |sum| <= div * 2^31 so the result fits int32. */
 static int32_t div_round(int64_t sum, uint32_t div, bool pow2, unsigned shift)
 {
-    struct fx_sum t;
-    int32_t y = 0;
     if (pow2) {
         return (int32_t)fx_rshift_round64(sum, shift);
     }
-    t.sum = sum;
-    t.count = div;
-    (void)fx_sum_mean(&t, &y); /* div >= 1 here: cannot fail */
-    return y;
+    return fx_div64(sum, div); /* div >= 1 and the quotient fits: never saturates */
 }
 
 /* ---- Block ---------------------------------------------------------------------------------- */

@@ -81,11 +81,7 @@ static bool axis_stats(const struct still *s, unsigned i, uint64_t var_max, int3
     const uint64_t w = s->cfg.window;
     const uint64_t a = fx_uabs64(s->sum[i]);      /* <= W 2^20 <= 2^31 */
     const uint64_t v = w * s->sum2[i] - a * a;    /* >= 0 (Cauchy-Schwarz), <= 2^62 */
-    struct fx_sum t;
-    int32_t m = 0;
-    t.sum = s->sum[i];
-    t.count = s->cfg.window;
-    (void)fx_sum_mean(&t, &m);                    /* count >= 2: cannot fail */
+    const int32_t m = fx_div64(s->sum[i], s->cfg.window); /* window >= 2, |mean d| < 2^31 */
     *mean = fx_sat32((int64_t)s->ref[i] + m);
     *var = v / (w * w);
     return v <= var_max * w * w;
