@@ -303,6 +303,17 @@ static void clear_output(struct tilt_output *out)
     out->valid = false;
 }
 
+/* The accelerometer angle (Q16 deg) as a measurement on the same turn as the state x (internal
+ * scale): roll wraps at +-180, so a reading across the wrap is moved by 360 deg. */
+static int32_t same_turn(fx_q16_t acc_angle, int64_t x)
+{
+    const int64_t d = (int64_t)acc_angle * 65536 - x;
+    int32_t z = acc_angle;
+    if (d > (int64_t)FX_DEG_180 * 65536) z -= FX_DEG_360;
+    if (d < -(int64_t)FX_DEG_180 * 65536) z += FX_DEG_360;
+    return z;
+}
+
 /* One axis, one step (the filter has started, 0 < dt <= dt_max). Kept out of line so that its
  * model arrays do not add to tilt_step's frame (see KF_NOINLINE in kf.c). */
 TILT_NOINLINE static bool step_axis(struct tilt *t, unsigned i, fx_q16_t w, bool gyro_ok, bool acc_ok,
@@ -347,12 +358,7 @@ TILT_NOINLINE static bool step_axis(struct tilt *t, unsigned i, fx_q16_t w, bool
         if (err == INC_ERR_OVERFLOW) overflow = true;
         if (acc_ok) {
             static const fx_q30_t h[2] = {FX_Q30_ONE, 0};
-            int64_t d = (int64_t)acc_angle * 65536 - s->kf.x[0];
-            int32_t z = acc_angle;
-            /* Roll wraps at +-180: measure the angle on the same turn as the state. */
-            if (d > (int64_t)FX_DEG_180 * 65536) z -= FX_DEG_360;
-            if (d < -(int64_t)FX_DEG_180 * 65536) z += FX_DEG_360;
-            err = kf_update_row(&s->kf, h, c->r_angle, z);
+            err = kf_update_row(&s->kf, h, c->r_angle, same_turn(acc_angle, s->kf.x[0]));
             if (err == INC_ERR_OVERFLOW) overflow = true;
         }
     } else {
@@ -370,11 +376,8 @@ TILT_NOINLINE static bool step_axis(struct tilt *t, unsigned i, fx_q16_t w, bool
         x_pred = s->kf.x[0];
         if (acc_ok) {
             static const fx_q30_t h1 = FX_Q30_ONE;
-            int64_t d = (int64_t)acc_angle * 65536 - x_pred;
-            int32_t z = acc_angle;
-            if (d > (int64_t)FX_DEG_180 * 65536) z -= FX_DEG_360;
-            if (d < -(int64_t)FX_DEG_180 * 65536) z += FX_DEG_360;
-            err = kf_update_row(&s->kf, &h1, c->r_angle, z); /* second stage: theta(k) */
+            /* second stage: theta(k) */
+            err = kf_update_row(&s->kf, &h1, c->r_angle, same_turn(acc_angle, x_pred));
             if (err == INC_ERR_OVERFLOW) overflow = true;
         }
         corr = s->kf.x[0] - x_pred; /* theta(k) - w_theta(k), deg * 2^32 */
