@@ -509,6 +509,7 @@ static int run_autonull(struct gyrocal *g, struct gyrocal_result *res, enum adis
 {
     struct adis_imu_sample s;
     const uint32_t fill = (GYROCAL_AUTONULL_FILL_MS * 8192u + 9999u) / 10000u; /* 164 at 819.2 */
+    enum gyrocal_reason why = GYROCAL_DONE;
     uint32_t i;
     int err = adis_imu_set_sample_period(g->imu, 0x01u);
     if (err == INC_OK) {
@@ -525,8 +526,11 @@ static int run_autonull(struct gyrocal *g, struct gyrocal_result *res, enum adis
     if (err == INC_OK) {
         err = close_window(g, &res->missed);
     }
-    if (err == INC_OK && during(g, m0) != GYROCAL_DONE) {
-        return abort_restore(g, res, during(g, m0), prd, avg);
+    if (err == INC_OK) {
+        why = during(g, m0);
+    }
+    if (why != GYROCAL_DONE) {
+        return abort_restore(g, res, why, prd, avg);
     }
     if (err == INC_OK) {
         /* the part nulls its filter output: the last 2 N - 1 samples, N = 64 */
@@ -661,8 +665,11 @@ int gyrocal_run(struct gyrocal *g, enum gyrocal_mode mode, struct gyrocal_result
         /* The part averages 30 s at its own settings and is busy meanwhile: no sample can be
          * read, so motion in that time shows only in the verification. */
         err = close_window(g, &res->missed);
-        if (err == INC_OK && during(g, m0) != GYROCAL_DONE) {
-            return finish(g, res, during(g, m0), reason_err(during(g, m0)));
+        if (err == INC_OK) {
+            why = during(g, m0); /* still GYROCAL_DONE from the start otherwise */
+        }
+        if (why != GYROCAL_DONE) {
+            return finish(g, res, why, reason_err(why));
         }
         if (err == INC_OK) {
             res->t_avg_start_ns = hal_now_ns(g->imu->cfg.hal);
