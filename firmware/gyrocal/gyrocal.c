@@ -405,21 +405,21 @@ static int post_read(struct gyrocal *g, struct sums *v, uint32_t *missed)
 static bool verify(const struct gyrocal *g, const struct sums *v, unsigned k,
                    const int16_t corr[3], bool corr_valid, struct gyrocal_result *res)
 {
+    struct gyrocal_correction c;
+    const uint32_t taps = 1u << (g->imu->sens_avg & ADIS_IMU_SENS_AVG_M_MASK);
     bool ok = true;
     unsigned i;
     if (v->n < 2u) {
         return true;
     }
     for (i = 0; i < 3u; i++) {
-        struct gyrocal_correction c;
-        int32_t m = mean_q16(v, i, k);
-        const int32_t se = se_q16(v, i, k, 1u << (g->imu->sens_avg & ADIS_IMU_SENS_AVG_M_MASK));
+        c.corr[i] = corr[i];
+    }
+    c.valid = corr_valid;
+    for (i = 0; i < 3u; i++) {
+        const int32_t m = gyrocal_correct_q16(&c, i, mean_q16(v, i, k));
+        const int32_t se = se_q16(v, i, k, taps);
         const int64_t lim = (int64_t)g->cfg.verify_sigmas * hypot_q16(se, res->residual_q16[i]);
-        c.corr[0] = corr[0];
-        c.corr[1] = corr[1];
-        c.corr[2] = corr[2];
-        c.valid = corr_valid;
-        m = gyrocal_correct_q16(&c, i, m);
         res->verify_mean_q16[i] = m;
         res->verify_limit_q16[i] = fx_sat32(lim);
         if (!res->saturated[i] && !res->proc_saturated[i] && (int64_t)fx_uabs32(m) > lim) {
