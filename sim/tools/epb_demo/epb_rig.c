@@ -348,6 +348,15 @@ int epb_rig_power_up(struct epb_rig *r, const struct app_cfg *cfg)
     return app_init(&r->app, cfg, &r->sensor, &r->store);
 }
 
+void epb_rig_face_dir(int face, double dir[3])
+{
+    const int f = face >= 0 && face < CAL_FACES ? face : CAL_FACE_ZP;
+    unsigned i;
+    for (i = 0; i < 3u; i++) {
+        dir[i] = face_vec[f][i];
+    }
+}
+
 void epb_rig_station(struct epb_rig *r, int face, double temp_c)
 {
     const int f = face >= 0 && face < CAL_FACES ? face : CAL_FACE_ZP;

@@ -1,6 +1,10 @@
 // station.cpp - see station.hpp.
 #include "station.hpp"
 
+extern "C" {
+#include "inclino/sim/epb_rig.h"
+}
+
 #include "inclino/calstation/fit.hpp"
 #include "inclino/calstation/record.hpp"
 #include "inclino/calstation/tmodel.hpp"
@@ -33,8 +37,11 @@ fx_q30_t up30(double r)
     return static_cast<fx_q30_t>(std::min(std::ceil(r * kQ30), 536870911.0));
 }
 
-// The specific force on each face (enum cal_face order: +x, -x, +y, -y, +z, -z).
-constexpr double kFaceDir[CAL_FACES][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+// Element i's reading m after the soak's on-device offset and gain: v = (r - offset) / gain.
+double element_v(const Soak &s, const app_face &m, int i)
+{
+    return (m.accel_g[i] / kQ16 - s.six.acc_offset[i] / kQ16) / (s.six.acc_gain[i] / kQ30);
+}
 
 // One row of the nonlinearity fit's design matrix.
 Eigen::Vector4d cubic_row(double v)
@@ -46,13 +53,16 @@ Eigen::Vector4d cubic_row(double v)
 std::string fit_nonlinearity(const Soak &amb, const Eigen::Matrix3d &P, calstation::CalResult &c, StationOut &out)
 {
     for (int i = 0; i < 3; i++) {
-        const double off = amb.six.acc_offset[i] / kQ16, gain = amb.six.acc_gain[i] / kQ30;
         std::vector<double> vs, ts;
         auto add = [&](const app_face &m, const double *dir) {
-            vs.push_back((m.accel_g[i] / kQ16 - off) / gain);
+            vs.push_back(element_v(amb, m, i));
             ts.push_back(P(i, 0) * dir[0] + P(i, 1) * dir[1] + P(i, 2) * dir[2]);
         };
-        for (int f = 0; f < CAL_FACES; f++) add(amb.faces[f], kFaceDir[f]);
+        for (int f = 0; f < CAL_FACES; f++) {
+            double dir[3];
+            epb_rig_face_dir(f, dir);
+            add(amb.faces[f], dir);
+        }
         for (const SweepPoint &s : amb.sweep) add(s.meas, s.dir.data());
         const int n = static_cast<int>(vs.size());
         Eigen::MatrixXd X(n, 4);
@@ -86,11 +96,8 @@ std::string station_record(const std::vector<Soak> &soaks, const calrec_binding 
     // flip cancels offset and the even nonlinearity). P_ii = 1 by construction. M = P^-1.
     Eigen::Matrix3d P;
     for (int i = 0; i < 3; i++) {
-        const double off = amb.six.acc_offset[i] / kQ16, gain = amb.six.acc_gain[i] / kQ30;
         for (int j = 0; j < 3; j++) {
-            const double vp = (amb.faces[2 * j].accel_g[i] / kQ16 - off) / gain;
-            const double vn = (amb.faces[2 * j + 1].accel_g[i] / kQ16 - off) / gain;
-            P(i, j) = 0.5 * (vp - vn);
+            P(i, j) = 0.5 * (element_v(amb, amb.faces[2 * j], i) - element_v(amb, amb.faces[2 * j + 1], i));
         }
     }
     const Eigen::Matrix3d M = P.inverse();

@@ -119,6 +119,9 @@ int epb_rig_power_up(struct epb_rig *r, const struct app_cfg *cfg);
 /* The firmware's sample rate for this part, milli-samples/s (for app_cfg_default). */
 uint32_t epb_rig_rate_mhz(const struct epb_rig *r);
 
+/* The specific force (g, part frame) on `face` (enum cal_face; out of range: CAL_FACE_ZP). */
+void epb_rig_face_dir(int face, double dir[3]);
+
 /* Station physics: the part on `face` (enum cal_face) at temp_c. */
 void epb_rig_station(struct epb_rig *r, int face, double temp_c);
 
