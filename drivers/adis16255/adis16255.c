@@ -276,19 +276,13 @@ static int check_outputs(struct adis16255 *st, const uint16_t *w, size_t n,
     return INC_OK;
 }
 
-/* Drop data-ready edges seen so far (after a procedure that disturbed the outputs). */
-static void dr_sync(struct adis16255 *st)
-{
-    adis_dr_sync(st->cfg.hal, &st->dr);
-}
-
 /* Clear ND of the sample registers so the next valid sample is a fresh one. */
 static int discard_outputs(struct adis16255 *st)
 {
     static const uint8_t addrs[2] = {ADIS16255_REG_GYRO_OUT, ADIS16255_REG_TEMP_OUT};
     uint16_t w[2];
     int err = adis_read_regs(&st->dev, addrs, w, 2u);
-    dr_sync(st);
+    adis_dr_sync(st->cfg.hal, &st->dr); /* drop the edges seen so far */
     return err;
 }
 
@@ -469,7 +463,7 @@ int adis16255_init(struct adis16255 *st, const struct adis16255_cfg *cfg)
         err = hal_irq_attach(cfg->hal, cfg->dr_pin,
                              cfg->dr_active_high ? HAL_EDGE_RISING : HAL_EDGE_FALLING, adis_dr_isr, &st->dr);
         st->dr_attached = err == INC_OK;
-        dr_sync(st);
+        adis_dr_sync(st->cfg.hal, &st->dr);
     }
     if (err != INC_OK) {
         st->initialised = false;
