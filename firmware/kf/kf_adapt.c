@@ -96,7 +96,7 @@ int kf_adapt_process(struct kf_adapt *f, int32_t z, int32_t *est, struct kf_adap
     }
     f->hist[f->head] = z;
     f->sum += z;
-    f->head = f->head + 1u == c->window ? 0u : f->head + 1u; /* no division (M0+ has none) */
+    f->head = (f->head + 1u) % c->window;
 
     if (f->count == 1u) {
         /* First sample: it is the estimate; P starts at p0. */
