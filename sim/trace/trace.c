@@ -1,11 +1,12 @@
 /* trace.c - register-traffic record and replay (see sim/trace.h, docs/traces.md). */
 #include "inclino/sim/trace.h"
-#include "trace_line.h"
 
 #include <ctype.h>
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
+
+#include "inclino/sim/line.h"
 
 #define TRACE_HEADER "# inclino-trace 1"
 
@@ -44,29 +45,6 @@ static int fail_msg(char *msg, size_t len, unsigned line, const char *what)
         snprintf(msg, len, "trace line %u: %s", line, what);
     }
     return INC_ERR_FORMAT;
-}
-
-int trace_read_line(FILE *f, char *buf, size_t cap)
-{
-    size_t n = 0;
-    int c, err = TRACE_LINE_OK;
-    while ((c = getc(f)) != EOF && c != '\n') {
-        if (c == '\0') {
-            err = TRACE_LINE_NUL;
-        } else if (n + 1u >= cap) {
-            err = err == TRACE_LINE_OK ? TRACE_LINE_TOO_LONG : err;
-        } else {
-            buf[n++] = (char)c;
-        }
-    }
-    buf[n] = '\0';
-    if (c == EOF && ferror(f)) {
-        return TRACE_LINE_IO;
-    }
-    if (c == EOF && n == 0 && err == TRACE_LINE_OK) {
-        return TRACE_LINE_EOF;
-    }
-    return err;
 }
 
 static bool is_blank(char c)
@@ -162,17 +140,17 @@ int trace_parse_next(FILE *f, unsigned *line, struct trace_record *r, char *msg,
     if (f == NULL || line == NULL || r == NULL) {
         return INC_ERR_NULL;
     }
-    while ((got = trace_read_line(f, buf, sizeof(buf))) != TRACE_LINE_EOF) {
+    while ((got = sim_read_line(f, buf, sizeof(buf))) != SIM_LINE_EOF) {
         const char *p = buf;
         unsigned long long v;
         (*line)++;
-        if (got == TRACE_LINE_TOO_LONG) {
+        if (got == SIM_LINE_TOO_LONG) {
             return fail_msg(msg, msg_len, *line, "line too long");
         }
-        if (got == TRACE_LINE_NUL) {
+        if (got == SIM_LINE_NUL) {
             return fail_msg(msg, msg_len, *line, "NUL byte in the line");
         }
-        if (got == TRACE_LINE_IO) {
+        if (got == SIM_LINE_IO) {
             if (msg != NULL && msg_len > 0) {
                 snprintf(msg, msg_len, "trace line %u: read error", *line);
             }
@@ -628,7 +606,7 @@ int trace_replay_open(struct trace_replay *rp, const char *path)
     }
     /* The header line exactly (trailing blanks or a CR allowed): "# inclino-trace 12" or a
      * header with more text is another format, not version 1. */
-    if (trace_read_line(rp->f, head, sizeof(head)) != TRACE_LINE_OK ||
+    if (sim_read_line(rp->f, head, sizeof(head)) != SIM_LINE_OK ||
         strncmp(head, TRACE_HEADER, strlen(TRACE_HEADER)) != 0 ||
         !rest_is_blank(head + strlen(TRACE_HEADER))) {
         snprintf(rp->msg, sizeof(rp->msg), "trace line 1: not an inclino trace (expected '%s')",

@@ -1,10 +1,11 @@
 /* trace_vcd.c - logic-analyser capture (VCD) to trace (see sim/trace.h, docs/traces.md). */
 #include "inclino/sim/trace.h"
-#include "trace_line.h"
 
 #include <ctype.h>
 #include <stdlib.h>
 #include <string.h>
+
+#include "inclino/sim/line.h"
 
 #define VCD_ID_MAX 16
 
@@ -107,16 +108,16 @@ int trace_from_vcd(FILE *vcd, FILE *out, const struct trace_vcd_opts *o, char *m
     cpha = (int)(o->mode & 1u);
     fprintf(out, "# inclino-trace 1\n# converted from a VCD capture (mode %u, %u-bit)\n", o->mode,
             o->bits);
-    while ((got = trace_read_line(vcd, line, sizeof(line))) != TRACE_LINE_EOF) {
+    while ((got = sim_read_line(vcd, line, sizeof(line))) != SIM_LINE_EOF) {
         char *p = line;
         lineno++;
-        if (got == TRACE_LINE_TOO_LONG) {
+        if (got == SIM_LINE_TOO_LONG) {
             return lfail(msg, msg_len, lineno, "line longer than 511 characters");
         }
-        if (got == TRACE_LINE_NUL) {
+        if (got == SIM_LINE_NUL) {
             return lfail(msg, msg_len, lineno, "NUL byte in the line");
         }
-        if (got == TRACE_LINE_IO) {
+        if (got == SIM_LINE_IO) {
             lfail(msg, msg_len, lineno, "read error");
             return INC_ERR_IO;
         }

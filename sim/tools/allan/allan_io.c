@@ -12,6 +12,7 @@
 #include <string.h>
 
 #include "inclino/error.h"
+#include "inclino/sim/line.h"
 
 /*
  * The CSV reader. Found by the mutation sweep (tests/fuzz/fuzz_allan_csv.c, docs/traces.md), each
@@ -23,33 +24,14 @@
  * NaN comparison is false); a non-uniform time named the file's last line instead of the step.
  */
 
-/* One line into buf (the '\n' kept out, trailing blanks and '\r' cut). Bytes are counted here,
- * not by fgets, so a NUL byte cannot end a line unseen. 1: a line; 0: end of file; -1: longer
- * than SIM_ALLAN_CSV_LINE_MAX; -2: a NUL byte; -3: read error. */
-static int read_line(FILE *f, char *buf, size_t cap)
+/* Cut trailing blanks and '\r' (CRLF) off a line read by sim_read_line. */
+static void trim_end(char *s)
 {
-    size_t n = 0;
-    int c, r = 1;
-    while ((c = getc(f)) != EOF && c != '\n') {
-        if (c == '\0') {
-            r = -2;
-        } else if (n + 1u >= cap) {
-            r = r == 1 ? -1 : r;
-        } else {
-            buf[n++] = (char)c;
-        }
-    }
-    if (c == EOF && ferror(f)) {
-        return -3;
-    }
-    if (c == EOF && n == 0u && r == 1) {
-        return 0;
-    }
-    while (n > 0u && (buf[n - 1u] == ' ' || buf[n - 1u] == '\t' || buf[n - 1u] == '\r')) {
+    size_t n = strlen(s);
+    while (n > 0u && (s[n - 1u] == ' ' || s[n - 1u] == '\t' || s[n - 1u] == '\r')) {
         n--;
     }
-    buf[n] = '\0';
-    return r;
+    s[n] = '\0';
 }
 
 /* The next field of a line from *p: blanks before it skipped; it ends at ',' ';' blank or the
@@ -186,13 +168,14 @@ int sim_allan_read_csv(FILE *f, unsigned col, int time_col, double scale, double
     *y = NULL;
     *n = 0;
     *bad_line = 0;
-    while ((got = read_line(f, line, sizeof(line))) != 0) {
+    while ((got = sim_read_line(f, line, sizeof(line))) != SIM_LINE_EOF) {
         double v, t = 0.0;
         lineno++;
-        if (got < 0) {
-            err = got == -3 ? INC_ERR_IO : INC_ERR_FORMAT; /* too long, NUL byte, read error */
+        if (got != SIM_LINE_OK) {
+            err = got == SIM_LINE_IO ? INC_ERR_IO : INC_ERR_FORMAT; /* too long, NUL byte, read error */
             break;
         }
+        trim_end(line);
         if (blank_or_comment(line)) {
             continue;
         }

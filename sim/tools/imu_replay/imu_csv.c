@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "inclino/error.h"
+#include "inclino/sim/line.h"
 
 static char *trim(char *s)
 {
@@ -44,26 +45,6 @@ int imu_csv_number(const char *s, double *out)
     return 0;
 }
 
-/*
- * One line into buf (newline kept out). Bytes are counted here: with fgets a NUL byte in the
- * last line (no newline after it) cut the line silently, "1.5\0 7" read as 1.5. Returns 1 for a
- * line, 0 at the end, -1 for a line longer than the limit, -2 for a NUL byte, -3 read error.
- */
-static int read_line(FILE *in, char *buf, size_t cap)
-{
-    size_t n = 0;
-    int c, r = 1;
-    while ((c = getc(in)) != EOF && c != '\n') {
-        if (c == '\0') r = r == 1 ? -2 : r;
-        else if (n + 1u >= cap) r = r == 1 ? -1 : r;
-        else buf[n++] = (char)c;
-    }
-    buf[n] = '\0';
-    if (c == EOF && ferror(in)) return -3;
-    if (c == EOF && n == 0 && r == 1) return 0;
-    return r;
-}
-
 static const char *const col_names[8] = {"time", "gyro x", "gyro y", "gyro z", "accel x", "accel y",
                                          "accel z", "temperature"};
 
@@ -85,20 +66,20 @@ int imu_csv_read(FILE *in, const char *name, struct imu_csv_table *t, char *msg,
     }
     memset(t, 0, sizeof(*t));
     msg[0] = '\0';
-    while ((got = read_line(in, buf, sizeof buf)) != 0) {
+    while ((got = sim_read_line(in, buf, sizeof buf)) != SIM_LINE_EOF) {
         char *s;
         int n, k;
         struct imu_csv_row r;
         line++;
-        if (got == -1) {
+        if (got == SIM_LINE_TOO_LONG) {
             snprintf(msg, msg_len, "%s line %ld: longer than %d characters", name, line, IMU_CSV_MAX_LINE);
             return fail(t, INC_ERR_FORMAT);
         }
-        if (got == -2) {
+        if (got == SIM_LINE_NUL) {
             snprintf(msg, msg_len, "%s line %ld: NUL byte in the line", name, line);
             return fail(t, INC_ERR_FORMAT);
         }
-        if (got == -3) {
+        if (got == SIM_LINE_IO) {
             snprintf(msg, msg_len, "%s: read error", name);
             return fail(t, INC_ERR_IO);
         }
