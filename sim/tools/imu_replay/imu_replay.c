@@ -28,6 +28,7 @@
 #include "inclino/app.h"
 #include "inclino/calstore.h"
 #include "inclino/sim/imu_csv.h"
+#include "inclino/simflash.h"
 #include "inclino/sca3000.h"
 #include "inclino/tilt.h"
 
@@ -132,34 +133,12 @@ static int cmp_double(const void *a, const void *b)
     return x < y ? -1 : (x > y ? 1 : 0);
 }
 
-/* ---- A RAM flash: the calibration is loaded the way the firmware loads it ------------------------- */
+/* ---- An emulated flash (sim_flash): the calibration is loaded the way the firmware loads it ---- */
 
 #define PAGE 1024u
-static uint8_t flash[2u * PAGE];
-
-static int ram_read(void *ctx, uint32_t addr, uint8_t *buf, uint32_t len)
-{
-    (void)ctx;
-    memcpy(buf, &flash[addr], len);
-    return INC_OK;
-}
-
-static int ram_program(void *ctx, uint32_t addr, const uint8_t *buf, uint32_t len)
-{
-    uint32_t i;
-    (void)ctx;
-    for (i = 0; i < len; i++) flash[addr + i] &= buf[i];
-    return INC_OK;
-}
-
-static int ram_erase(void *ctx, uint32_t addr)
-{
-    (void)ctx;
-    memset(&flash[addr], 0xFF, PAGE);
-    return INC_OK;
-}
-
-static const struct calstore_flash_ops ram_ops = {ram_read, ram_program, ram_erase};
+#define PROG 8u
+static uint8_t flash_mem[2u * PAGE];
+static struct simflash flash;
 
 /* ---- The replay "sensor": the identity of the chosen part; samples come through app_step --------- */
 
@@ -385,10 +364,12 @@ int main(int argc, char **argv)
         rid.id.revision = o.revid;
     }
     if (o.record != NULL || o.calibrated) {
-        static const struct calstore_config sc = {&ram_ops, NULL, PAGE, 8u, CALSTORE_ERASED, {0u, PAGE}, PAGE};
+        static const struct simflash_geometry geo = {PAGE, 2u, PROG};
+        static const struct calstore_config sc = {&simflash_calstore_ops, &flash, PAGE, PROG, CALSTORE_ERASED,
+                                                  {0u, PAGE}, PAGE};
         struct calrec rec;
-        memset(flash, 0xFF, sizeof flash);
-        if (calstore_init(&store, &sc) != INC_OK) {
+        if (simflash_init(&flash, flash_mem, sizeof flash_mem, &geo) != INC_OK ||
+            calstore_init(&store, &sc) != INC_OK) {
             free(t.rows);
             return 2;
         }
