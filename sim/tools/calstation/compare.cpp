@@ -109,11 +109,12 @@ std::string format_compare(const std::vector<CompareAxis> &rows)
         std::map<std::string, std::array<CompareCell, CompareAxis::kCells>> worst;
         std::vector<std::string> order;
         for (const auto &r : rows) {
-            if (!worst.count(r.part)) order.push_back(r.part);
+            const bool first = !worst.count(r.part);
+            if (first) order.push_back(r.part);
             auto &w = worst[r.part];
             const auto &cells = q ? r.scale : r.bias;
             for (size_t k = 0; k < cells.size(); k++) {
-                w[k].ok = cells[k].ok && (w[k].ok || w[k].in_sample == 0.0);
+                w[k].ok = cells[k].ok && (first || w[k].ok); // n/a when any axis of the part failed
                 w[k].in_sample = std::max(w[k].in_sample, cells[k].in_sample);
                 w[k].in_all = std::max(w[k].in_all, cells[k].in_all);
                 w[k].held_out = std::max(w[k].held_out, cells[k].held_out);
