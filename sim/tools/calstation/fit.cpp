@@ -49,19 +49,10 @@ double mean_of(const std::vector<double> &v)
 std::string check_tmodel(const TModel &m, double ylim, const std::string &what)
 {
     auto bad = [&](const std::string &s) { return "coefficient out of range: " + what + " " + s; };
-    int np = 0;
-    switch (m.kind) {
-    case TKind::None: return "";
-    case TKind::Linear: np = 2; break;
-    case TKind::Parabola: np = 3; break;
-    case TKind::Lorentz: np = 2; break;
-    case TKind::LorentzCubic: np = 7; break;
-    case TKind::Pwl: np = m.n; break;
-    }
-    for (int k = 0; k < np; k++) {
-        if (m.kind != TKind::Pwl && (m.kind == TKind::Lorentz || m.kind == TKind::LorentzCubic) &&
-            (k == 2 || k == 3)) {
-            continue;
+    if (m.kind == TKind::None) return "";
+    for (int k = 0; k < m.params(); k++) {
+        if (tparam_is_degc(m.kind, k)) {
+            continue; // the Lorentz width and centre: their own limits below
         }
         if (!(std::fabs(m.p[k]) <= ylim)) {
             return bad("parameter p" + std::to_string(k) + " = " + num(m.p[k], 6) +

@@ -228,9 +228,7 @@ int cmd_show(int argc, char **argv)
             if (m.kind != TKind::None && m.kind != TKind::Lorentz) std::printf(" t_ref %.3f t_span %.3f", m.t_ref, m.t_span);
             if (m.kind == TKind::Pwl) std::printf(" n %d", m.n);
             std::printf(" p");
-            const int np = m.kind == TKind::Pwl ? m.n : m.kind == TKind::Linear ? 2 : m.kind == TKind::Parabola ? 3
-                         : m.kind == TKind::Lorentz ? 4 : m.kind == TKind::LorentzCubic ? 7 : 0;
-            for (int k = 0; k < np; k++) std::printf(" %.7g", m.p[k]);
+            for (int k = 0; k < m.params(); k++) std::printf(" %.7g", m.p[k]);
             std::printf("\n");
         }
     }

@@ -30,18 +30,8 @@ void put_tmodel(const TModel &m, double yscale, struct calrec_tmodel &o)
         o.t_ref = q(m.t_ref, kQ16);
         o.t_span = q(m.t_span, kQ16);
     }
-    int np = 0;
-    switch (m.kind) {
-    case TKind::Linear: np = 2; break;
-    case TKind::Parabola: np = 3; break;
-    case TKind::Lorentz: np = 4; break;
-    case TKind::LorentzCubic: np = 7; break;
-    case TKind::Pwl: np = m.n; break;
-    case TKind::None: break;
-    }
-    for (int k = 0; k < np; k++) {
-        const bool degc = (m.kind == TKind::Lorentz || m.kind == TKind::LorentzCubic) && (k == 2 || k == 3);
-        o.p[k] = q(m.p[k], degc ? kQ16 : yscale);
+    for (int k = 0; k < m.params(); k++) {
+        o.p[k] = q(m.p[k], tparam_is_degc(m.kind, k) ? kQ16 : yscale);
     }
 }
 
@@ -53,8 +43,7 @@ TModel get_tmodel(const struct calrec_tmodel &o, double yscale)
     m.t_ref = o.t_ref / kQ16;
     m.t_span = o.t_span / kQ16;
     for (int k = 0; k < kTParams; k++) {
-        const bool degc = (m.kind == TKind::Lorentz || m.kind == TKind::LorentzCubic) && (k == 2 || k == 3);
-        m.p[k] = o.p[k] / (degc ? kQ16 : yscale);
+        m.p[k] = o.p[k] / (tparam_is_degc(m.kind, k) ? kQ16 : yscale);
     }
     return m;
 }

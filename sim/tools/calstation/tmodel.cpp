@@ -42,6 +42,24 @@ const char *tkind_name(TKind k)
     return "?";
 }
 
+int TModel::params() const
+{
+    switch (kind) {
+    case TKind::None: return 0;
+    case TKind::Linear: return 2;
+    case TKind::Parabola: return 3;
+    case TKind::Lorentz: return 4;
+    case TKind::LorentzCubic: return 7;
+    case TKind::Pwl: return n;
+    }
+    return 0;
+}
+
+bool tparam_is_degc(TKind kind, int k)
+{
+    return (kind == TKind::Lorentz || kind == TKind::LorentzCubic) && (k == 2 || k == 3);
+}
+
 double TModel::eval(double t) const
 {
     switch (kind) {

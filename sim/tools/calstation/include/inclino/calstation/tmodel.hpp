@@ -39,7 +39,13 @@ struct TModel {
     std::array<double, kTParams> p{};
 
     double eval(double t_c) const;
+    // The parameters the kind uses, p[0..params()-1]: 2, 3, 4, 7 or n (PWL); 0 for None.
+    int params() const;
 };
+
+// Whether parameter k of a model of kind `kind` is a temperature in degC (the Lorentz width p2
+// and centre p3), not a value of the quantity.
+bool tparam_is_degc(TKind kind, int k);
 
 const char *tkind_name(TKind k);
 
