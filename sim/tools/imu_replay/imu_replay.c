@@ -9,8 +9,8 @@
  * and the tilt filter (firmware/tilt: roll and pitch, seed 004 step 4) run on it, sample by
  * sample, with the real time step of each row. The estimates are written as CSV.
  *
- * Input: lines starting with '#' and blank lines are skipped; an optional header line (its first
- * field is not a number); then rows of 7 or 8 comma-separated numbers:
+ * Input: lines starting with '#' and blank lines are skipped; an optional header line (every
+ * field a name: non-empty and not a number); then rows of 7 or 8 comma-separated numbers:
  *   time (s), gyro x, y, z (deg/s), accel x, y, z (g) [, temperature (degC)]
  * Time must increase strictly. A step longer than --gap-factor nominal periods is a gap: the
  * samples missed are counted (column gap) and the filters integrate over the real step. Any bad

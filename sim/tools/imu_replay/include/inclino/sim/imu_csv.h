@@ -2,8 +2,8 @@
  * imu_csv.h - the recorded-IMU CSV reader of the imu_replay tool (docs/imu-replay.md), as a
  * library so that it can be tested on buffers (tests/fuzz) and not only through the tool.
  *
- * Input: lines starting with '#' and blank lines are skipped; an optional header line (its first
- * field is not a number); then rows of 7 or 8 comma-separated numbers:
+ * Input: lines starting with '#' and blank lines are skipped; an optional header line (every
+ * field a name: non-empty and not a number); then rows of 7 or 8 comma-separated numbers:
  *   time (s), gyro x, y, z (deg/s), accel x, y, z (g) [, temperature (degC)]
  * Every field is a finite decimal number; time is in [0, IMU_CSV_TIME_MAX_S] and increases
  * strictly; every row has the column count of the first row (or of the header).
