@@ -8,17 +8,20 @@
 #   rv32imac       riscv64-unknown-elf, freestanding; every firmware module compiled and linked
 #
 # Module kinds:
-#   inclino_add_module(NAME n SOURCES .. [INCLUDE dirs] [DEPS targets] [FREESTANDING] [HOST_ONLY])
-#       static library inclino_<n>. FREESTANDING modules (firmware/, drivers/, hal/ except the
-#       host port) are C11 with no libc, no heap and no floating point; they are built for every
-#       target. Others (sim/) are hosted C and are built where tests run (host and Cortex-M).
+#   inclino_add_module(NAME n LAYER l SOURCES .. [INCLUDE dirs] [DEPS targets] [FREESTANDING]
+#                      [HOST_ONLY])
+#       static library inclino_<n>. LAYER is the module's layer, which must be its folder's
+#       (cmake/inclino_layers.cmake); a module may depend only on its own layer or lower ones.
+#       FREESTANDING modules (base/, hal/, drivers/, firmware/) are C11 with no libc, no heap and
+#       no floating point; they are built for every target. Others (sim/, tools/lib, test
+#       fixtures) are hosted C and are built where tests run (host and Cortex-M).
 #   inclino_add_test(NAME n SOURCES .. [LIBS ..] [HOST_ONLY] [WILL_FAIL] [EXPECT_STATUS n] [RV32]
 #                    [TIMEOUT s] [LABELS ..])
 #       a test executable; on Cortex-M it runs under QEMU through CMAKE_CROSSCOMPILING_EMULATOR.
 #       EXPECT_STATUS n: the test passes only when the program exits with exactly status n (on
 #       rv32 QEMU reports every failure as 1). RV32: the test also runs on rv32imac under
 #       qemu-system-riscv32; only for tests that need nothing beyond unit.h, the freestanding
-#       headers, <string.h> mem*/str* basics and printf (tests/support/board/rv32/include).
+#       headers, <string.h> mem*/str* basics and printf (boards/qemu/rv32/include).
 #   inclino_add_host_tool(NAME n SOURCES .. [LIBS ..])  host-only program (C or C++).
 #   inclino_add_image(NAME n SOURCES .. [LIBS ..])      cross firmware image with map + size report.
 
@@ -77,24 +80,11 @@ if(INCLINO_SANITIZE)
   add_link_options(-fsanitize=address,undefined -fno-sanitize-recover=all)
 endif()
 
-if(INCLINO_IS_HOST)
-  enable_testing()
-  set(INCLINO_CAN_RUN_TESTS ON)
-elseif(INCLINO_IS_ARM)
-  enable_testing()
-  set(INCLINO_CAN_RUN_TESTS ON)
-  if(NOT CMAKE_CROSSCOMPILING_EMULATOR)
-    message(FATAL_ERROR "The ${INCLINO_TARGET} toolchain file sets no CMAKE_CROSSCOMPILING_EMULATOR")
-  endif()
-else()
-  # RISC-V: there is no C library, so only tests marked RV32 run under qemu-system-riscv32 (the
-  # board tests: .data/.bss, a deliberate failure, a fault); the cross checks (no float, no libc,
-  # images well formed) run on the build host. See docs/build.md.
-  enable_testing()
-  set(INCLINO_CAN_RUN_TESTS ON)
-  if(NOT CMAKE_CROSSCOMPILING_EMULATOR)
-    message(FATAL_ERROR "The ${INCLINO_TARGET} toolchain file sets no CMAKE_CROSSCOMPILING_EMULATOR")
-  endif()
+# Tests run on every target: natively on the host, under QEMU on the cross targets (rv32: only
+# the tests marked RV32, since it has no C library; see docs/build.md).
+enable_testing()
+if(NOT INCLINO_IS_HOST AND NOT CMAKE_CROSSCOMPILING_EMULATOR)
+  message(FATAL_ERROR "The ${INCLINO_TARGET} toolchain file sets no CMAKE_CROSSCOMPILING_EMULATOR")
 endif()
 
 set(INCLINO_ROOT "${CMAKE_CURRENT_LIST_DIR}/..")
@@ -131,10 +121,11 @@ endfunction()
 set_property(GLOBAL PROPERTY INCLINO_FREESTANDING_MODULES "")
 
 function(inclino_add_module)
-  cmake_parse_arguments(M "FREESTANDING;HOST_ONLY;HOSTED" "NAME" "SOURCES;INCLUDE;DEPS;PRIVATE_DEPS" ${ARGN})
+  cmake_parse_arguments(M "FREESTANDING;HOST_ONLY" "NAME;LAYER" "SOURCES;INCLUDE;DEPS;PRIVATE_DEPS" ${ARGN})
   if(NOT M_NAME)
     message(FATAL_ERROR "inclino_add_module: NAME is required")
   endif()
+  _inclino_check_module_layer(${M_NAME} "${M_LAYER}")
   if(M_HOST_ONLY AND NOT INCLINO_IS_HOST)
     return()
   endif()
@@ -142,6 +133,8 @@ function(inclino_add_module)
     return()
   endif()
   set(tgt inclino_${M_NAME})
+  set_property(GLOBAL APPEND PROPERTY INCLINO_MODULES ${tgt})
+  set_property(GLOBAL PROPERTY INCLINO_LAYER_OF_${tgt} ${M_LAYER})
   if(M_SOURCES)
     add_library(${tgt} STATIC ${M_SOURCES})
     set(scope PUBLIC)
@@ -166,15 +159,12 @@ function(inclino_add_module)
 endfunction()
 
 function(inclino_add_test)
-  cmake_parse_arguments(T "HOST_ONLY;WILL_FAIL;NO_EMULATOR;RV32" "NAME;TIMEOUT;EXPECT_STATUS"
+  cmake_parse_arguments(T "HOST_ONLY;WILL_FAIL;RV32" "NAME;TIMEOUT;EXPECT_STATUS"
     "SOURCES;LIBS;LABELS;ARGS" ${ARGN})
   if(NOT T_NAME)
     message(FATAL_ERROR "inclino_add_test: NAME is required")
   endif()
   if(T_HOST_ONLY AND NOT INCLINO_IS_HOST)
-    return()
-  endif()
-  if(NOT INCLINO_CAN_RUN_TESTS)
     return()
   endif()
   if(INCLINO_IS_RISCV AND NOT T_RV32)
@@ -215,10 +205,13 @@ function(inclino_add_host_tool)
   target_link_libraries(${H_NAME} PRIVATE ${H_LIBS})
 endfunction()
 
+include(inclino_layers)
+
 # Cross-target helpers (board support, images, size report) live in their own file.
 include(inclino_cross)
 
 function(inclino_finalize)
+  inclino_check_layers()
   if(NOT INCLINO_IS_HOST)
     inclino_cross_finalize()
   endif()

@@ -2,11 +2,12 @@
 # Included from cmake/inclino.cmake (directory scope of the top level). See docs/build.md.
 #
 #   inclino_link_qemu_board(exe)
-#       turns a test executable into a QEMU program: the image startup of hal/port/rt, the board
-#       hooks of tests/support/board (newlib + semihosting on Cortex-M, a tiny libc shim on rv32),
+#       turns a test executable into a QEMU program: the image startup of hal/rt, the board
+#       hooks of boards/qemu (newlib + semihosting on Cortex-M, a tiny libc shim on rv32),
 #       the board's linker script; map file and size report (<exe>.size.txt, not printed).
-#   inclino_add_image(NAME n [SOURCES ..] [LIBS ..] [WHOLE_LIBS ..] [LINK_CHECK])
-#       a freestanding firmware image: -nostdlib -lgcc, the target's realistic memory (below),
+#   inclino_add_image(NAME n MEMORY fo fk ro rk st [SOURCES ..] [LIBS ..] [WHOLE_LIBS ..] [LINK_CHECK])
+#       a freestanding firmware image: -nostdlib -lgcc, the board's memory (flash origin and KiB,
+#       RAM origin and KiB, stack bytes; see boards/generic/CMakeLists.txt),
 #       --gc-sections, map file; after the link the size report (<n>.size.txt) and the stack
 #       report (<n>.stack.txt) are written next to the ELF and printed. WHOLE_LIBS are linked
 #       --whole-archive. LINK_CHECK: generous memory and no --gc-sections (inclino_all). Each image
@@ -35,8 +36,8 @@ find_package(Python3 3.7 COMPONENTS Interpreter REQUIRED)
 list(APPEND INCLINO_FREESTANDING_OPTIONS -fstack-usage -fcallgraph-info=su)
 
 set(INCLINO_SCRIPTS_DIR ${INCLINO_ROOT}/cmake/scripts)
-set(INCLINO_RT_DIR ${INCLINO_ROOT}/hal/port/rt)
-set(INCLINO_BOARD_DIR ${INCLINO_ROOT}/tests/support/board)
+set(INCLINO_RT_DIR ${INCLINO_ROOT}/hal/rt)
+set(INCLINO_BOARD_DIR ${INCLINO_ROOT}/boards/qemu)
 if(INCLINO_IS_ARM)
   set(INCLINO_RT_LD_DIR ${INCLINO_RT_DIR}/arm)
   set(INCLINO_RT_SECTIONS cortex-m-sections.ld)
@@ -47,23 +48,13 @@ else()
   set(INCLINO_QEMU_BOARD_LD ${INCLINO_BOARD_DIR}/virt-rv32.ld)
 endif()
 
-# Memory of the firmware images: realistic parts of each class (flash/RAM in KiB, stack in bytes).
-#   cortex-m0plus   64 KiB flash @0x00000000,   8 KiB RAM @0x20000000, 1 KiB stack
-#   cortex-m3      256 KiB flash @0x00000000,  64 KiB RAM @0x20000000, 4 KiB stack
-#   cortex-m4f     512 KiB flash @0x00000000, 128 KiB RAM @0x20000000, 4 KiB stack
-#   rv32imac       256 KiB flash @0x20000000,  64 KiB RAM @0x80000000, 4 KiB stack
-# The link-check image inclino_all gets 1 MiB / 256 KiB: it only proves that everything links.
-if(INCLINO_TARGET STREQUAL "cortex-m0plus")
-  set(INCLINO_IMAGE_MEMORY 0x00000000 64 0x20000000 8 1024)
-elseif(INCLINO_TARGET STREQUAL "cortex-m3")
-  set(INCLINO_IMAGE_MEMORY 0x00000000 256 0x20000000 64 4096)
-elseif(INCLINO_TARGET STREQUAL "cortex-m4f")
-  set(INCLINO_IMAGE_MEMORY 0x00000000 512 0x20000000 128 4096)
+# Where flash and RAM start on each architecture: the origin of the link-check image inclino_all
+# (1 MiB / 256 KiB: it only proves that everything links). The boards give their images' memory.
+if(INCLINO_IS_ARM)
+  set(INCLINO_LINK_CHECK_MEMORY 0x00000000 1024 0x20000000 256 4096)
 else()
-  set(INCLINO_IMAGE_MEMORY 0x20000000 256 0x80000000 64 4096)
+  set(INCLINO_LINK_CHECK_MEMORY 0x20000000 1024 0x80000000 256 4096)
 endif()
-list(GET INCLINO_IMAGE_MEMORY 0 INCLINO_IMAGE_FLASH_ORIGIN)
-list(GET INCLINO_IMAGE_MEMORY 2 INCLINO_IMAGE_RAM_ORIGIN)
 
 # The C library the cross-check compares against: every symbol libgcc defines, float helpers
 # excepted, may be referenced by the firmware; anything else undefined is a libc dependency.
@@ -104,7 +95,7 @@ function(inclino_link_qemu_board exe)
     # newlib nano with semihosting (rdimon); the startup is ours (-nostartfiles), see rt.h.
     target_link_options(${exe} PRIVATE -specs=rdimon.specs -nostartfiles)
   else()
-    # No C library on rv32: the board's shim (tests/support/board/rv32) and the mem* of rt.
+    # No C library on rv32: the board's shim (boards/qemu/rv32) and the mem* of rt.
     target_link_libraries(${exe} PRIVATE inclino_rt)
   endif()
   target_link_options(${exe} PRIVATE -T${INCLINO_QEMU_BOARD_LD} -L${INCLINO_RT_LD_DIR})
@@ -114,16 +105,21 @@ function(inclino_link_qemu_board exe)
 endfunction()
 
 function(inclino_add_image)
-  cmake_parse_arguments(I "LINK_CHECK" "NAME" "SOURCES;LIBS;WHOLE_LIBS" ${ARGN})
+  cmake_parse_arguments(I "LINK_CHECK" "NAME" "SOURCES;LIBS;WHOLE_LIBS;MEMORY" ${ARGN})
   if(NOT I_NAME)
     message(FATAL_ERROR "inclino_add_image: NAME is required")
   endif()
   set(img ${I_NAME})
 
   if(I_LINK_CHECK)
-    set(mem ${INCLINO_IMAGE_FLASH_ORIGIN} 1024 ${INCLINO_IMAGE_RAM_ORIGIN} 256 4096)
+    set(mem ${INCLINO_LINK_CHECK_MEMORY})
   else()
-    set(mem ${INCLINO_IMAGE_MEMORY})
+    set(mem ${I_MEMORY})
+  endif()
+  list(LENGTH mem n)
+  if(NOT n EQUAL 5)
+    message(FATAL_ERROR "inclino_add_image(${img}): MEMORY takes five values (flash origin, "
+      "flash KiB, RAM origin, RAM KiB, stack bytes), got '${mem}'")
   endif()
   list(GET mem 0 FLASH_ORIGIN)
   list(GET mem 1 FLASH_KIB)

@@ -1,6 +1,6 @@
 /*
  * Host benchmark driver for callgrind instruction counts of the averaging filters and the
- * stillness detector (tests/avg/bench_avg.sh). `bench_avg <case>` runs BENCH_N samples through
+ * stillness detector (benches/avg/bench_avg.sh). `bench_avg <case>` runs BENCH_N samples through
  * one filter; callgrind counts only the named push function, so the count per call is the cost
  * per sample. Not a test: it checks nothing (the tests are test_avg / test_still).
  */

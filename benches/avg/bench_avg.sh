@@ -1,10 +1,10 @@
 #!/bin/sh
 # Instructions per sample of the averaging filters and the stillness/thermal detectors on the
 # host: callgrind counting only the push function (and its callees), BENCH_N = 100000 samples.
-#   tests/avg/bench_avg.sh <host build dir>
+#   benches/avg/bench_avg.sh <host build dir>
 # Prints a markdown table for docs/benchmarks.md. Needs valgrind (fails if it is missing).
 set -eu
-bin="${1:?usage: bench_avg.sh <host build dir>}/tests/avg/bench_avg"
+bin="${1:?usage: bench_avg.sh <host build dir>}/benches/avg/bench_avg"
 count="$(dirname "$0")/../../cmake/scripts/callgrind_count.sh"
 n=100000
 echo "| filter | configuration | function | instructions / sample |"

@@ -1,6 +1,6 @@
 /*
  * bench_avg_cm.c - instructions per sample of the averaging filters and the stillness/thermal
- * detectors on Cortex-M under QEMU (not a test; tests/avg/bench_avg_cm.sh runs it).
+ * detectors on Cortex-M under QEMU (not a test; benches/avg/bench_avg_cm.sh runs it).
  *
  * With -icount shift=S,align=off QEMU's virtual time advances 2^S ns per executed instruction
  * and the mps2 SysTick (25 MHz processor clock) counts instructions x 2^S / 40

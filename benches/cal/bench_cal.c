@@ -1,6 +1,6 @@
 /*
- * bench_cal.c - benchmark driver for firmware/cal (not a test; tests/cal/bench_cal.sh on the
- * host with callgrind, tests/cal/bench_cal_cm.sh on Cortex-M under QEMU -icount).
+ * bench_cal.c - benchmark driver for firmware/signal/cal (not a test; benches/cal/bench_cal.sh on the
+ * host with callgrind, benches/cal/bench_cal_cm.sh on Cortex-M under QEMU -icount).
  *
  * The record is the station's record for simulated part A (golden_record_a.h: Lorentz + cubic
  * temperature models, full misalignment matrix, cubic nonlinearity), so the per-sample path runs

@@ -1,10 +1,10 @@
 #!/bin/sh
-# Instruction counts per call of the firmware/cal functions on the host, callgrind counting only
+# Instruction counts per call of the firmware/signal/cal functions on the host, callgrind counting only
 # the function itself (and its callees: fx). Usage:
-#   tests/cal/bench_cal.sh <host build dir>
+#   benches/cal/bench_cal.sh <host build dir>
 # Prints a markdown table for docs/benchmarks.md (Calibration). Needs valgrind.
 set -eu
-bin="${1:?usage: bench_cal.sh <host build dir>}/tests/cal/bench_cal"
+bin="${1:?usage: bench_cal.sh <host build dir>}/benches/cal/bench_cal"
 count="$(dirname "$0")/../../cmake/scripts/callgrind_count.sh"
 n=100000
 echo "| function | case | instructions / call |"

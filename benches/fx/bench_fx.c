@@ -1,5 +1,5 @@
 /*
- * bench_fx.c - host benchmark driver for firmware/fx (not a test; see tests/fx/bench_fx.sh).
+ * bench_fx.c - host benchmark driver for base/fx (not a test; see benches/fx/bench_fx.sh).
  *
  * Calls each function BENCH_N times over representative inputs prepared beforehand, so that
  * valgrind --tool=callgrind --collect-atstart=no --toggle-collect=<function> counts only the

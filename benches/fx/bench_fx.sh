@@ -1,10 +1,10 @@
 #!/bin/sh
-# Instruction counts per call of every firmware/fx function on the host, with callgrind counting
+# Instruction counts per call of every base/fx function on the host, with callgrind counting
 # only the function itself (and its callees). Usage:
-#   tests/fx/bench_fx.sh <build-dir>      (the host preset's build directory)
+#   benches/fx/bench_fx.sh <build-dir>      (the host preset's build directory)
 # Prints a markdown table for docs/benchmarks.md. Needs valgrind (fails if it is missing).
 set -eu
-bin="${1:?usage: bench_fx.sh <host build dir>}/tests/fx/bench_fx"
+bin="${1:?usage: bench_fx.sh <host build dir>}/benches/fx/bench_fx"
 count="$(dirname "$0")/../../cmake/scripts/callgrind_count.sh"
 n=100000
 echo "| function | instructions / call |"

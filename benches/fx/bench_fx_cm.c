@@ -1,5 +1,5 @@
 /*
- * bench_fx_cm.c - instruction counts of firmware/fx on Cortex-M under QEMU (not a test).
+ * bench_fx_cm.c - instruction counts of base/fx on Cortex-M under QEMU (not a test).
  *
  * QEMU does not model the DWT cycle counter, but with -icount shift=S,align=off its virtual
  * time advances 2^S ns per executed instruction, and the mps2-an385/an386 SysTick, clocked by the
@@ -7,7 +7,7 @@
  * runs BENCH_CM_N times over prepared inputs; the same loop around an empty noinline function of
  * the same shape is subtracted, so the figure is the function's own instructions per call
  * (callee-side, without the caller's loop, argument set-up and call). Instructions, not cycles.
- * Run with tests/fx/bench_fx_cm.sh <cross build dir>.
+ * Run with benches/fx/bench_fx_cm.sh <cross build dir>.
  */
 #include <stdio.h>
 

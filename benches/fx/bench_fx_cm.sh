@@ -1,9 +1,9 @@
 #!/bin/sh
-# Instructions per call of firmware/fx on Cortex-M under QEMU, counted with -icount and SysTick
+# Instructions per call of base/fx on Cortex-M under QEMU, counted with -icount and SysTick
 # (bench_fx_cm.c; method in cmake/scripts/bench_icount.sh). Usage:
-#   tests/fx/bench_fx_cm.sh <cortex-m3 or cortex-m0plus build dir>   (machine mps2-an385)
-#   tests/fx/bench_fx_cm.sh <cortex-m4f build dir> mps2-an386
+#   benches/fx/bench_fx_cm.sh <cortex-m3 or cortex-m0plus build dir>   (machine mps2-an385)
+#   benches/fx/bench_fx_cm.sh <cortex-m4f build dir> mps2-an386
 set -eu
 dir="${1:?usage: bench_fx_cm.sh <cross build dir> [machine]}"
-exec "$(dirname "$0")/../../cmake/scripts/bench_icount.sh" "$dir/tests/fx/bench_fx_cm.elf" \
+exec "$(dirname "$0")/../../cmake/scripts/bench_icount.sh" "$dir/benches/fx/bench_fx_cm.elf" \
     "${2:-mps2-an385}" "function" "instructions / call"

@@ -1,11 +1,11 @@
 /*
  * bench_kf_cm.c - instructions per update of the filters on Cortex-M under QEMU (not a test).
  *
- * The method of tests/fx/bench_fx_cm.c: with -icount shift=S,align=off QEMU advances its virtual
+ * The method of benches/fx/bench_fx_cm.c: with -icount shift=S,align=off QEMU advances its virtual
  * time 2^S ns per executed instruction, and the mps2 SysTick (25 MHz processor clock) then counts
  * instructions * 2^S / 40. Each filter update runs BENCH_N times on prepared, noisy inputs after a
  * warm-up (the filters are in their steady state); the same loop around an empty noinline
- * function is subtracted. Instructions, not cycles. Run with tests/kf/bench_kf_cm.sh <dir>.
+ * function is subtracted. Instructions, not cycles. Run with benches/kf/bench_kf_cm.sh <dir>.
  */
 #include <stdbool.h>
 #include <stdio.h>

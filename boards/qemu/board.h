@@ -1,7 +1,7 @@
 /*
  * board.h - what the QEMU test boards (board_arm.c, board_rv32.c) offer the tests.
  *
- * The boards run every cross test on the image startup of hal/port/rt (see rt.h) and add:
+ * The boards run every cross test on the image startup of hal/rt (see rt.h) and add:
  *   - stack painting: the whole stack region is filled with BOARD_STACK_PATTERN at reset; at exit
  *     the board prints "stack high-water: N of M bytes" (N = bytes ever used, found by scanning
  *     for the first overwritten word) and fails the test if the whole stack was used;

@@ -1,7 +1,7 @@
 /*
  * board_arm.c - the Cortex-M QEMU test board (mps2-an385 / mps2-an386); see board.h.
  *
- * The reset path is the image startup (hal/port/rt/arm/startup_cm.c: .data copy, .bss zeroing);
+ * The reset path is the image startup (hal/rt/arm/startup_cm.c: .data copy, .bss zeroing);
  * this file supplies its hooks: paint the stack, initialise newlib's semihosting I/O and
  * constructors, exit(main()) so the status reaches QEMU, and fault handling. Linked with
  * -specs=nano.specs -specs=rdimon.specs -nostartfiles (see cmake/inclino_cross.cmake).

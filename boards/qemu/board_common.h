@@ -1,4 +1,4 @@
-/* board_common.h - shared by the QEMU boards (private to tests/support/board). */
+/* board_common.h - shared by the QEMU boards (private to boards/qemu). */
 #ifndef INCLINO_BOARD_COMMON_H
 #define INCLINO_BOARD_COMMON_H
 

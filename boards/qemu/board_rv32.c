@@ -1,7 +1,7 @@
 /*
  * board_rv32.c - the rv32 QEMU test board (machine virt, -bios none); see board.h.
  *
- * The reset path is the image startup (hal/port/rt/riscv/crt0.S: gp, sp, mtvec, .data copy,
+ * The reset path is the image startup (hal/rt/riscv/crt0.S: gp, sp, mtvec, .data copy,
  * .bss zeroing); this file supplies its hooks: paint the stack, turn main()'s result into QEMU's
  * exit status (0 or 1, see rv32/mini_libc.c) and make every trap a reported failure.
  */
@@ -41,7 +41,7 @@ void rt_exit_hook(int status)
 void rt_fault(uint32_t cause, uintptr_t fault_sp)
 {
     uint32_t mepc;
-    /* Zicsr: see hal/port/rt/riscv/crt0.S. */
+    /* Zicsr: see hal/rt/riscv/crt0.S. */
     __asm volatile(".option push\n\t.option arch, +zicsr\n\tcsrr %0, mepc\n\t.option pop"
                    : "=r"(mepc));
     printf("FAULT: mcause 0x%lx, mepc 0x%lx, sp 0x%lx\n", (unsigned long)cause,

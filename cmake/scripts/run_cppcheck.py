@@ -1,10 +1,10 @@
 #!/usr/bin/env python3
 """run_cppcheck.py - cppcheck over the project's C/C++ sources, as the CTest test "cppcheck".
 
-Checks firmware/ drivers/ hal/ sim/ tests/ with
+Checks base/ hal/ drivers/ firmware/ boards/ sim/ tools/ benches/ tests/ with
   --enable=warning,style,performance,portability --error-exitcode=1
 and explicit include directories: every include/ directory of a module, tests/support and
-tests/support/board (found at run time, so a new module needs no edit here). Explicit
+boards/qemu (found at run time, so a new module needs no edit here). Explicit
 directories rather than the host's compile database, because the database holds only what the
 host builds: the Cortex-M port, the cross run-time and the QEMU boards would go unchecked.
 
@@ -15,7 +15,7 @@ import os
 import subprocess
 import sys
 
-DIRS = ["firmware", "drivers", "hal", "sim", "tests"]
+DIRS = ["base", "hal", "drivers", "firmware", "boards", "sim", "tools", "benches", "tests"]
 
 
 def main():
@@ -32,7 +32,7 @@ def main():
             if os.path.basename(dirpath) == "include" and "rv32" not in dirpath.split(os.sep):
                 includes.append(dirpath)
     includes += [os.path.join(args.root, "tests", "support"),
-                 os.path.join(args.root, "tests", "support", "board")]
+                 os.path.join(args.root, "boards", "qemu")]
     sources = [os.path.join(args.root, d) for d in DIRS if os.path.isdir(os.path.join(args.root, d))]
     suppressions = os.path.join(os.path.dirname(os.path.abspath(__file__)),
                                 "cppcheck-suppressions.txt")

@@ -4,8 +4,8 @@
 Run after every cross link (cmake/inclino_cross.cmake). Every input section in the map is
 charged to the module it came from:
   inclino_<m>   an object of the static library libinclino_<m>.a (one per module)
-  startup       the image startup objects (hal/port/rt, target inclino_rt_startup)
-  board         the QEMU test board objects (tests/support/board)
+  startup       the image startup objects (hal/rt, target inclino_rt_startup)
+  board         the QEMU test board objects (boards/qemu)
   libgcc, libc, ... other archives by name; <target> for the executable's own objects
   stack         the stack reserved by the linker script (.stack)
   (fill/align)  padding the linker inserted between input sections

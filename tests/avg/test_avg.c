@@ -1,5 +1,5 @@
 /*
- * Averaging filters (firmware/avg): rejected lengths, exact outputs against brute-force
+ * Averaging filters (firmware/signal/avg): rejected lengths, exact outputs against brute-force
  * references written independently (integer rounding ties away from zero), exact kernels from
  * impulse responses, no overflow at the extremes of int32 and at the longest lengths, and the
  * noise law: on white noise the output rms is sigma * sqrt(sum h^2) (1/sqrt(N) for N-sample

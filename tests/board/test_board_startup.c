@@ -1,6 +1,6 @@
 /*
  * The startup initialised memory: every .data object holds its initial value, every .bss
- * object is zero. On the QEMU boards the startup is the image startup of hal/port/rt, so this
+ * object is zero. On the QEMU boards the startup is the image startup of hal/rt, so this
  * proves the .data copy (from its load address in flash) and the .bss loop of the firmware
  * images; on the host it checks the same C guarantees against the native startup.
  */

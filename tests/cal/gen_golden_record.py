@@ -4,7 +4,7 @@ simulated part A (sim_calpart_paper) bound to an SCA3000-D01 (family 1, product 
 0x52), so that tests/cal/test_cal_sca3000.c can run the firmware correction with a real
 station-made record on every target (the tool itself is host-only). Run from a host build:
 
-    python3 tests/cal/gen_golden_record.py <build>/sim/tools/calstation/calstation
+    python3 tests/cal/gen_golden_record.py <build>/tools/calstation/calstation
 """
 import os
 import subprocess

@@ -1,5 +1,5 @@
 /*
- * test_cal_bitident.c - bit identity of firmware/cal across targets.
+ * test_cal_bitident.c - bit identity of firmware/signal/cal across targets.
  *
  * One fixed deterministic input set (xorshift32 from fixed seeds): random temperature models and
  * records within the calrec limits, temperatures beyond the range, inputs up to the limits and

@@ -1,4 +1,4 @@
-/* On-device calibration procedures (firmware/cal, cal_proc.c): one-point, +-1 g flip (seed 000,
+/* On-device calibration procedures (firmware/signal/cal, cal_proc.c): one-point, +-1 g flip (seed 000,
  * with the correct gain, and what its misprinted 0.5 would do), six-position, still-interval
  * averaging, gyro offset and turn scale; exact values, error bounds, every refusal. Host and
  * QEMU. */

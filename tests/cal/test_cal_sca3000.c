@@ -2,7 +2,7 @@
  * The calibration chain on a device model: the simulated part's errors (sim/calpart.h, part A:
  * seed 002's temperature curves, seed 000's nonlinearity, misalignment) plugged into the SCA3000
  * register model through its error-model hook, read by the SCA3000 driver over the bit-banged
- * SPI of the simulated board, and corrected by firmware/cal:
+ * SPI of the simulated board, and corrected by firmware/signal/cal:
  *   1. the counts read over SPI are exactly the error model's output quantised at 0.75 mg;
  *   2. the on-device six-position procedure (driver reads, cal_avg, cal_six_position) gives
  *      the flip offset and gain of those counts;

@@ -1,4 +1,4 @@
-// Bad station input (sim/tools/calstation): every case gets a clear error that names the
+// Bad station input (tools/calstation): every case gets a clear error that names the
 // problem (and the line where there is one), and no calibration result. Host only.
 #include "inclino/calstation/fit.hpp"
 #include "inclino/calstation/station.hpp"

@@ -1,4 +1,4 @@
-// The calibration station end to end (sim/tools/calstation): a simulated part measured on the
+// The calibration station end to end (tools/calstation): a simulated part measured on the
 // simulated station, fitted, and checked against the part's true errors; and seed 002's
 // comparison with the goal of the best model (<= 0.5 mg, <= 5 ppm/degC) on two parts, in-sample
 // and held out. Host only (C++/Eigen).

@@ -1,4 +1,4 @@
-// Temperature models of the calibration station (sim/tools/calstation, tmodel.hpp): every fit
+// Temperature models of the calibration station (tools/calstation, tmodel.hpp): every fit
 // recovers a noiseless model exactly (or its curve, where the parameters are not identifiable),
 // the evaluation semantics (clamping, holding), and the refusals. Host only (C++/Eigen).
 #include "inclino/calstation/tmodel.hpp"

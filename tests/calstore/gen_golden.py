@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Regenerate golden_v2.h: the exact version-2 image of the fixture record (fixture.c, fix_record)
 with sequence number 7, written from the byte table in docs/calibration-storage.md with Python's
-struct and zlib, i.e. independently of firmware/calrec. Run: python3 tests/calstore/gen_golden.py
+struct and zlib, i.e. independently of firmware/signal/calrec. Run: python3 tests/calstore/gen_golden.py
 """
 import struct
 import zlib

@@ -1,5 +1,5 @@
 /*
- * Mutation sweep of the Allan tool's CSV reader (sim_allan_read_csv, sim/tools/allan,
+ * Mutation sweep of the Allan tool's CSV reader (sim_allan_read_csv, tools/allan,
  * docs/noise-and-allan.md), plain host build and ASan+UBSan.
  *
  * Seeds: the example of tests/allan (header, comment, blank line, time column, scale 2), a

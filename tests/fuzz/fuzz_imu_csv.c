@@ -1,5 +1,5 @@
 /*
- * Mutation sweep of the imu_replay CSV reader (imu_csv_read, sim/tools/imu_replay), plain host
+ * Mutation sweep of the imu_replay CSV reader (imu_csv_read, tools/imu_replay), plain host
  * build and ASan+UBSan.
  *
  * Seeds: the first 40 lines of the committed example recording, the gap example, and a

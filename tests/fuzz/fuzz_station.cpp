@@ -1,5 +1,5 @@
 // Mutation sweep of the calibration-station file reader (calstation::parse_station,
-// sim/tools/calstation/csv.cpp), plain host build and ASan+UBSan.
+// tools/lib/calstation/csv.cpp), plain host build and ASan+UBSan.
 //
 // Seeds: a chamber file with two soaks of six faces, a gyro_still and a gyro_turn row, all four
 // settings; and the ambient file of tests/cal (six faces, no gyro). A station that parses is

@@ -1,6 +1,6 @@
 /*
  * fx_test_int.h - the integer-only part of the tests/fx helpers: sweep density, a deterministic
- * generator and exact integer references (written independently of firmware/fx; the rounding
+ * generator and exact integer references (written independently of base/fx; the rounding
  * division is unit_round_div in unit.h).
  * No libm and no floating point, so the tests that use only this header also run on rv32imac,
  * whose test board has no C library beyond a printf shim.

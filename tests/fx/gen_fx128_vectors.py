@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""gen_fx128_vectors.py - exact test vectors for firmware/fx/fx128.c (Python big integers).
+"""gen_fx128_vectors.py - exact test vectors for base/fx/fx128.c (Python big integers).
 
 Prints the C tables of tests/fx/fx128_vectors.h. The rounding rule is the project's: to nearest,
 ties away from zero; saturation to int64 / the int128 range. Deterministic (fixed seed).

@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
-"""Generate the constant tables of firmware/fx (fx_trig.c) in exact decimal arithmetic.
+"""Generate the constant tables of base/fx (fx_trig.c) in exact decimal arithmetic.
 
 Run: python3 tests/fx/gen_fx_consts.py
-The output is pasted into firmware/fx/fx_trig.c; the tests (tests/fx/) check the resulting
+The output is pasted into base/fx/fx_trig.c; the tests (tests/fx/) check the resulting
 functions against libm, so a wrong constant cannot pass silently. Standard library only.
 """
 from decimal import Decimal as D, getcontext, ROUND_HALF_EVEN

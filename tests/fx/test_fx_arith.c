@@ -3,7 +3,7 @@
  * reciprocal, accumulation.
  *
  * Every result here is exact math followed by one documented rounding, so the tests compare
- * with exact integer references (fx_test.h, written independently of firmware/fx) and require
+ * with exact integer references (fx_test.h, written independently of base/fx) and require
  * equality: that proves |error| <= 0.5 LSB and the tie rule at once.
  * Random sweep: FX_DENSITY(1000000, 200000) pairs per function (full = host preset /
  * reduced = QEMU and host-sanitize).

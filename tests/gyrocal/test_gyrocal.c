@@ -1,5 +1,5 @@
 /*
- * Gyro bias calibration (firmware/gyrocal) on the simulated ADIS1636x/1640x: defaults, gating
+ * Gyro bias calibration (firmware/services/gyrocal) on the simulated ADIS1636x/1640x: defaults, gating
  * (refuses when moving or not settled, nothing written), each mode's result measured on the part
  * (the achieved bias: error-model bias + the part's offset register + the processor-side
  * correction), the exact command words (GLOB_CMD bit 3 = 0xBE08, never seed 003's 0xBE04),

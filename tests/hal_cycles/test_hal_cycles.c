@@ -1,5 +1,5 @@
 /*
- * Cycle <-> ns conversion (hal/port/cycles): exact where the clock divides 1e9, within the
+ * Cycle <-> ns conversion (hal/cycles): exact where the clock divides 1e9, within the
  * documented bounds everywhere else, against references computed exactly in 64-bit integers.
  * Runs on the host, under QEMU on Cortex-M and on rv32: the results are bit-identical.
  */

@@ -1,5 +1,5 @@
 // test_kf_ref.cpp - the fixed-point filters against the double-precision Eigen reference
-// (sim/ref) on the same inputs, over long runs (host only).
+// (sim/kfref) on the same inputs, over long runs (host only).
 //
 // Each case feeds identical quantised inputs to both (the reference gets every parameter as the
 // firmware quantised it: KfRef/AdaptParams/TiltParams::from_fixed), runs 10^6 steps (10^5 in the

@@ -1,5 +1,5 @@
 /*
- * Stillness and thermal settling (firmware/still): configuration checks, exact window statistics
+ * Stillness and thermal settling (firmware/signal/still): configuration checks, exact window statistics
  * and threshold boundaries, the state machine, each test's trigger (variance, steady rotation,
  * steady acceleration, slow tilt, overrange) with int32 extremes, and simulated ADIS1636x-like
  * data (white noise of the seed-003 density, 0.05 deg/s and 1 mg per LSB): at rest -> AT_REST

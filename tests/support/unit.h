@@ -53,7 +53,7 @@ static inline uint32_t unit_rand32(uint32_t *state)
 }
 
 /* Exact round(n / d), ties away from zero, for d > 0 and |n| < 2^62: a reference for tests,
- * independent of firmware/fx (floor division with a non-negative remainder, then compare
+ * independent of base/fx (floor division with a non-negative remainder, then compare
  * 2 * rem with d). */
 static inline int64_t unit_round_div(int64_t n, int64_t d)
 {

@@ -162,7 +162,7 @@ int cmd_fit(int argc, char **argv)
         std::fprintf(stderr, "calstation: %s: %s\n", in.c_str(), e.c_str());
         return 1;
     }
-    std::printf("firmware check (fixed point, firmware/cal, on the quantised record): %zu acc rows, "
+    std::printf("firmware check (fixed point, firmware/signal/cal, on the quantised record): %zu acc rows, "
                 "max |firmware - double model| = %.2f LSB Q16; max |corrected - true| = %.3f mg "
                 "(tilt rows within +-30 deg: %.3f mg)\n",
                 fw.rows, fw.max_lsb, fw.max_err_mg, fw.max_tilt_err_mg);

@@ -2,7 +2,7 @@
 # sweep.sh - the EPB demo over a grid of parts, part seeds, slopes and temperatures: is every
 # valid estimate's true slope within its bound? (docs/benchmarks.md, "EPB demo")
 #
-#   sim/tools/epb_demo/sweep.sh BUILD_DIR [PART_SEEDS]
+#   tools/epb_demo/sweep.sh BUILD_DIR [PART_SEEDS]
 #
 # Grid: parts adis16405, adis16364, adis16362, sca3000-d01; part seeds 0 (part A) and 1..N-1
 # (default 10 seeds: 0..9); grades -30, -8, 0, 10, 30, 50 %; 25 degC... -20, 5, 25, 40, 60 degC;
@@ -12,7 +12,7 @@
 set -eu
 build=${1:?usage: sweep.sh BUILD_DIR [PART_SEEDS]}
 seeds=${2:-10}
-demo="$build/sim/tools/epb_demo/epb_demo"
+demo="$build/tools/epb_demo/epb_demo"
 tmp=$(mktemp)
 trap 'rm -f "$tmp"' EXIT
 : > "$tmp.all"

@@ -6,7 +6,7 @@
  * Every row is quantised to the chosen part's LSBs and output range and converted back with the
  * driver's own conversions, so the firmware sees exactly what it would read from that part; then
  * the EPB application (firmware/app: calibration, stillness, block average, slope with its bound)
- * and the tilt filter (firmware/tilt: roll and pitch, seed 004 step 4) run on it, sample by
+ * and the tilt filter (firmware/signal/tilt: roll and pitch, seed 004 step 4) run on it, sample by
  * sample, with the real time step of each row. The estimates are written as CSV.
  *
  * Input: lines starting with '#' and blank lines are skipped; an optional header line (every

@@ -1,4 +1,4 @@
-/* string.h - rv32 test shim (see stdio.h). mem* come from hal/port/rt (inclino_rt). */
+/* string.h - rv32 test shim (see stdio.h). mem* come from hal/rt (inclino_rt). */
 #ifndef INCLINO_RV32_STRING_H
 #define INCLINO_RV32_STRING_H
 

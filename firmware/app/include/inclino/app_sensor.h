@@ -2,7 +2,7 @@
  * app_sensor.h - the sensor seen by the EPB application: one small ops struct (read the next
  * sample, report the part's identity) plus a context pointer (module inclino_app, prefix app_).
  * The adapters that fill it from the drivers: inclino/app_adis.h (ADIS1636x/1640x) and
- * inclino/app_sca3000.h (SCA3000); a replay fills it from recorded data (sim/tools/imu_replay).
+ * inclino/app_sca3000.h (SCA3000); a replay fills it from recorded data (tools/imu_replay).
  *
  * A sample is in physical units, Q16.16 (inclino/fx.h): acceleration in g scaled with the part's
  * NOMINAL sensitivity (what the calibration record corrects, inclino/cal.h), angular rate in

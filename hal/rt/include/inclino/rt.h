@@ -7,11 +7,11 @@
  * -ffreestanding, so this module provides them (mem.c, standard C semantics).
  *
  * Startup (one per architecture, not part of the library but linked as an object into every
- * cross executable, see hal/port/rt/CMakeLists.txt):
+ * cross executable, see hal/rt/CMakeLists.txt):
  *   arm/startup_cm.c  vector table, Reset_Handler, Default_Handler for any Cortex-M
  *   riscv/crt0.S      _start (gp, sp, mtvec), trap entry for rv32
  * Both copy .data from its load address in flash, zero .bss, call rt_init_hook(), main() and
- * rt_exit_hook(main's result). The same startup runs the QEMU test boards (tests/support/board),
+ * rt_exit_hook(main's result). The same startup runs the QEMU test boards (boards/qemu),
  * which override the hooks below; so every test under QEMU also exercises the image startup.
  *
  * Linker scripts: arm/cortex-m-sections.ld and riscv/rv32-sections.ld hold the sections; a small

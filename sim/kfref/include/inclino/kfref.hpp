@@ -1,6 +1,6 @@
 // kfref.hpp - double-precision reference models of the Kalman filters (host only, C++17, Eigen).
 //
-// Module inclino_kfref (sim/ref). Each class is the textbook form of one firmware filter, in
+// Module inclino_kfref (sim/kfref). Each class is the textbook form of one firmware filter, in
 // double, written from the equations (seed 001, seed 004, docs/kalman.md) and not from the
 // fixed-point code, so that the tests in tests/kf can compare the two on the same inputs:
 //   KfRef     inclino/kf.h        the five equations, sequential scalar updates, Joseph form

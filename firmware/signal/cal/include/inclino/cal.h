@@ -3,7 +3,7 @@
  * procedures (one-point offset, +-1 g flip, six-position, gyro still interval and turns), the
  * temperature-model evaluation, and the per-sample correction with the coefficients of a
  * calibration record (inclino/calrec.h). Least-squares fits (misalignment, nonlinearity,
- * temperature) are not here: the calibration-station tool makes them (sim/tools/calstation,
+ * temperature) are not here: the calibration-station tool makes them (tools/calstation,
  * docs/calibration.md); this module only applies their coefficients.
  *
  * Freestanding C11, integer only. Formats (docs/fixed-point.md): fx_q16_t Q16.16 for physical

@@ -49,7 +49,7 @@
  *              the gain, which the Joseph form turns into a second-order term).
  *   tests/kf/test_kf_exact.c proves both and checks the firmware bit for bit against an
  *   independent __int128 model of these roundings; tests/kf/test_kf_ref.cpp compares 10^6-step
- *   runs with the double-precision Eigen reference (sim/ref).
+ *   runs with the double-precision Eigen reference (sim/kfref).
  *
  * COST per call (n states, nu inputs, one measurement row; zero entries of A, B and h skip their
  *   products): predict n (n + nu) + n^3 + n^2 (n + 1) / 2 128-bit multiply-adds and one

@@ -43,7 +43,7 @@
  *   offset is deg/s * 2^32. Accelerometer angles (tilt_accel_angles): |error| <= 0.85 LSB Q16
  *   against exact math on the same input (fx_atan2_deg's 0.81 LSB plus < 0.01 LSB from the
  *   scaled square root; measured 0.54 LSB). The filter: tests/kf/test_kf_ref.cpp compares
- *   10^6-step runs with the double-precision reference (sim/ref): within 0.005 deg (measured
+ *   10^6-step runs with the double-precision reference (sim/kfref): within 0.005 deg (measured
  *   5e-6 deg, printed form 8e-5 deg).
  * RANGES: see tilt_config_check. Angles are meant for |pitch| < 90 deg; roll wraps at +-180.
  */

@@ -5,7 +5,7 @@
  * Cortex-M part, and takes everything MCU-specific from an MCU-family seam:
  *
  *   time        SysTick (every core) or the DWT cycle counter (ARMv7-M: M3/M4F), counting core
- *               clock cycles in 64 bits; converted to ns with hal/port/cycles (no floating
+ *               clock cycles in 64 bits; converted to ns with hal/cycles (no floating
  *               point, no division after init).
  *   delay_ns    busy-wait on that counter; never shorter than requested.
  *   crit_*      PRIMASK: crit_enter returns the previous PRIMASK, crit_exit restores it, so

@@ -1,7 +1,7 @@
 /*
  * sim/calpart.h - a simulated inertial part with the errors that calibration removes, packaged as
  * a sim_error_model (sim/inertial.h) so it plugs into any device model, or is sampled directly
- * by the calibration-station simulator (sim/tools/calstation).
+ * by the calibration-station simulator (tools/calstation).
  *
  * Accelerometer, per sensing element i (x, y, z), for the true specific force a (g):
  *     x_i   = sum_j axis[i][j] * a_j                     misalignment / cross-axis (row i = the

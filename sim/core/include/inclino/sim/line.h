@@ -1,7 +1,7 @@
 /*
  * line.h - one line of a text file, bytes counted (host side). Shared by the readers of the
- * trace (sim/trace), VCD, Allan-deviation CSV (sim/tools/allan) and recorded-IMU CSV
- * (sim/tools/imu_replay) formats.
+ * trace (sim/trace), VCD, Allan-deviation CSV (tools/allan) and recorded-IMU CSV
+ * (tools/imu_replay) formats.
  *
  * fgets cannot tell a NUL byte inside a line from the end of the string, so a line such as
  * "miso=A\0 5C3" or "1.5\0 7" used to be read cut short (docs/traces.md, "Mutation sweep").

@@ -1,6 +1,6 @@
 // record.hpp - from the station's fitted coefficients (CalResult, physical units) to the
-// calibration record of the firmware (firmware/calrec, format version 2) and its byte image, and
-// the firmware cross-check: the fixed-point correction (firmware/cal) run on the station's own
+// calibration record of the firmware (firmware/signal/calrec, format version 2) and its byte image, and
+// the firmware cross-check: the fixed-point correction (firmware/signal/cal) run on the station's own
 // rows against the double-precision model of the same quantised record.
 #ifndef INCLINO_CALSTATION_RECORD_HPP
 #define INCLINO_CALSTATION_RECORD_HPP

@@ -2,7 +2,7 @@
 // the firmware's semantics, and the fits of the calibration station (seed 000's three-point
 // parabola, seed 002's linear and Lorentz fits, a piecewise-linear table, Lorentz + cubic).
 //
-// The parameterisation is the one of the calibration record (firmware/calrec, calrec.h); the
+// The parameterisation is the one of the calibration record (firmware/signal/calrec, calrec.h); the
 // values here are in the physical unit of the quantity (g for bias, unitless for the relative
 // scale-factor deviation) before quantisation to Q16.16 / Q30:
 //   LINEAR        y = p0 + p1*u                      u = clamp((T - t_ref) / t_span, -1, 1)
