@@ -4,7 +4,7 @@
 # Host build and tools: cmake make gcc g++ libeigen3-dev python3 (scripts, size reports)
 # Cross builds:         gcc-arm-none-eabi libnewlib-arm-none-eabi gcc-riscv64-unknown-elf
 # Tests under QEMU:     qemu-system-arm (Cortex-M) qemu-system-misc (riscv32)
-# Checks and tools:     cppcheck valgrind (instruction counts) sigrok-cli (decoding VCDs)
+# Checks and tools:     cppcheck clang-format valgrind (instruction counts) sigrok-cli (decoding VCDs)
 #
 # --no-install-recommends keeps QEMU from pulling in its GUI and firmware packages.
 # Uses sudo only when not already root.
@@ -13,7 +13,7 @@ set -eu
 packages="cmake make gcc g++ python3 libeigen3-dev \
     gcc-arm-none-eabi libnewlib-arm-none-eabi gcc-riscv64-unknown-elf \
     qemu-system-arm qemu-system-misc \
-    cppcheck valgrind sigrok-cli"
+    cppcheck clang-format valgrind sigrok-cli"
 
 if [ "$(id -u)" -eq 0 ]; then
     sudo=""
