@@ -62,10 +62,10 @@ static u128 mul_u64(uint64_t a, uint64_t b)
         return r;
     }
     if (a1 == 0u || b1 == 0u) {
-        uint64_t x = a1 == 0u ? a0 : b0;         /* the 32-bit operand */
-        uint64_t y1 = a1 == 0u ? b1 : a1;        /* high word of the other */
+        uint64_t x = a1 == 0u ? a0 : b0;  /* the 32-bit operand */
+        uint64_t y1 = a1 == 0u ? b1 : a1; /* high word of the other */
         uint64_t p1 = x * y1;
-        mid = (p00 >> 32) + (uint32_t)p1;       /* < 2^33 */
+        mid = (p00 >> 32) + (uint32_t)p1; /* < 2^33 */
         r.lo = (mid << 32) | (uint32_t)p00;
         r.hi = (p1 >> 32) + (mid >> 32);
         return r;

@@ -163,7 +163,8 @@ int fx_mean_i32(const int32_t *x, uint32_t n, int32_t *mean)
     uint32_t i;
     if (x == NULL || mean == NULL) return INC_ERR_NULL;
     if (n == 0u || n > FX_SUM_MAX_COUNT) return INC_ERR_INVAL;
-    for (i = 0; i < n; i++) sum += x[i];
+    for (i = 0; i < n; i++)
+        sum += x[i];
     *mean = mean_round(sum, n);
     return INC_OK;
 }

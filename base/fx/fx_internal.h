@@ -11,11 +11,25 @@
 static inline unsigned fx_msb32(uint32_t x)
 {
     unsigned n = 0;
-    if (x >= 0x10000u) { x >>= 16; n += 16u; }
-    if (x >= 0x100u) { x >>= 8; n += 8u; }
-    if (x >= 0x10u) { x >>= 4; n += 4u; }
-    if (x >= 0x4u) { x >>= 2; n += 2u; }
-    if (x >= 0x2u) { n += 1u; }
+    if (x >= 0x10000u) {
+        x >>= 16;
+        n += 16u;
+    }
+    if (x >= 0x100u) {
+        x >>= 8;
+        n += 8u;
+    }
+    if (x >= 0x10u) {
+        x >>= 4;
+        n += 4u;
+    }
+    if (x >= 0x4u) {
+        x >>= 2;
+        n += 2u;
+    }
+    if (x >= 0x2u) {
+        n += 1u;
+    }
     return n;
 }
 

@@ -43,13 +43,10 @@
 
 /* atan(2^-i) in degrees, Q24, i = 0..27 (gen_fx_consts.py). */
 static const uint32_t fx_atan_tab[FX_CORDIC_STEPS] = {
-    754974720u, 445687602u, 235489088u, 119537938u,
-    60000934u, 30029717u, 15018523u, 7509720u,
-    3754917u, 1877466u, 938734u, 469367u,
-    234684u, 117342u, 58671u, 29335u,
-    14668u, 7334u, 3667u, 1833u,
-    917u, 458u, 229u, 115u,
-    57u, 29u, 14u, 7u,
+    754974720u, 445687602u, 235489088u, 119537938u, 60000934u, 30029717u, 15018523u,
+    7509720u,   3754917u,   1877466u,   938734u,    469367u,   234684u,   117342u,
+    58671u,     29335u,     14668u,     7334u,      3667u,     1833u,     917u,
+    458u,       229u,       115u,       57u,        29u,       14u,       7u,
 };
 
 /* atan(small / big) in Q16 degrees, for 0 <= small <= big, big != 0. Result in [0, 45 deg]. */
@@ -74,8 +71,8 @@ static int32_t atan_octant(uint32_t big, uint32_t small)
     }
 
     /* Step 0 (rotate by -45 deg) is known to go this way because y >= 0. */
-    x = big + small;                    /* <= 2^31 */
-    y = (int32_t)small - (int32_t)big;  /* in [-2^30, 0] */
+    x = big + small;                   /* <= 2^31 */
+    y = (int32_t)small - (int32_t)big; /* in [-2^30, 0] */
     z = (int32_t)fx_atan_tab[0];
     for (i = 1u; i < FX_CORDIC_STEPS; i++) {
         int32_t ys = fx_asr32(y, i);
@@ -190,8 +187,14 @@ static unsigned reduce_quadrant(int32_t deg, int32_t *r)
     int32_t a = deg % FX_DEG_360; /* C99 truncation: a in (-360, 360) deg */
     unsigned q = 0;
     if (a < 0) a += FX_DEG_360;
-    if (a >= FX_DEG_180) { a -= FX_DEG_180; q = 2u; }
-    if (a >= FX_DEG_90) { a -= FX_DEG_90; q += 1u; }
+    if (a >= FX_DEG_180) {
+        a -= FX_DEG_180;
+        q = 2u;
+    }
+    if (a >= FX_DEG_90) {
+        a -= FX_DEG_90;
+        q += 1u;
+    }
     *r = a;
     return q;
 }

@@ -75,17 +75,17 @@ __attribute__((noinline)) static int empty_th(const void *p, int32_t t, bool *f)
 }
 
 /* Ticks of BENCH_N calls of FN(STATE, in[i], &y, &f). */
-#define RUN4(FN, STATE, OUT)                              \
-    do {                                                  \
-        int32_t y_ = 0;                                   \
-        bool f_ = false;                                  \
-        uint32_t i_;                                      \
-        ticks_reset();                                    \
-        for (i_ = 0; i_ < BENCH_N; i_++) {                \
-            (void)FN(STATE, in[i_], &y_, &f_);            \
-        }                                                 \
-        (OUT) = ticks();                                  \
-        sink = y_;                                        \
+#define RUN4(FN, STATE, OUT)                   \
+    do {                                       \
+        int32_t y_ = 0;                        \
+        bool f_ = false;                       \
+        uint32_t i_;                           \
+        ticks_reset();                         \
+        for (i_ = 0; i_ < BENCH_N; i_++) {     \
+            (void)FN(STATE, in[i_], &y_, &f_); \
+        }                                      \
+        (OUT) = ticks();                       \
+        sink = y_;                             \
     } while (0)
 
 static void report(const char *name, uint32_t t, uint32_t base)

@@ -46,7 +46,8 @@ static int prepare(void)
     b.product = CALREC_SCA3000_D01;
     b.revision = 0x52;
     if (calrec_decode(golden_record_a, sizeof golden_record_a, &b, &rec, NULL) != INC_OK ||
-        cal_acc_init(&acc, &rec, FX_Q16_INT(25)) != INC_OK || cal_gyro_init(&gyro, &rec) != INC_OK) {
+        cal_acc_init(&acc, &rec, FX_Q16_INT(25)) != INC_OK ||
+        cal_gyro_init(&gyro, &rec) != INC_OK) {
         return -1;
     }
     for (i = 0; i < BENCH_N; i++) {
@@ -77,7 +78,8 @@ static int prepare(void)
     models[3].n = 9;
     models[3].t_ref = -20 * 65536;
     models[3].t_span = 10 * 65536;
-    for (i = 0; i < 9; i++) models[3].p[i] = 900 - 100 * i;
+    for (i = 0; i < 9; i++)
+        models[3].p[i] = 900 - 100 * i;
     models[4] = rec.acc_tbias[0];
     return 0;
 }
@@ -89,13 +91,17 @@ static void run(const char *c)
     int i;
     fx_q16_t out[3];
     if (!strcmp(c, "acc_apply")) {
-        for (i = 0; i < BENCH_N; i++) sink += cal_acc_apply(&acc, in3[i], out) + out[0];
+        for (i = 0; i < BENCH_N; i++)
+            sink += cal_acc_apply(&acc, in3[i], out) + out[0];
     } else if (!strcmp(c, "gyro_apply")) {
-        for (i = 0; i < BENCH_N; i++) sink += cal_gyro_apply(&gyro, in3[i], out) + out[0];
+        for (i = 0; i < BENCH_N; i++)
+            sink += cal_gyro_apply(&gyro, in3[i], out) + out[0];
     } else if (!strcmp(c, "acc_set_temp")) {
-        for (i = 0; i < BENCH_N; i++) sink += cal_acc_set_temp(&acc, temp[i]);
+        for (i = 0; i < BENCH_N; i++)
+            sink += cal_acc_set_temp(&acc, temp[i]);
     } else if (!strncmp(c, "tmodel_", 7)) {
-        static const char *const kinds[5] = {"linear", "parabola", "lorentz", "pwl", "lorentz_cubic"};
+        static const char *const kinds[5] = {"linear", "parabola", "lorentz", "pwl",
+                                             "lorentz_cubic"};
         int k;
         for (k = 0; k < 5; k++) {
             if (!strcmp(c + 7, kinds[k])) {
@@ -114,12 +120,14 @@ static void run(const char *c)
     } else if (!strcmp(c, "avg_add")) {
         static struct cal_avg a;
         cal_avg_reset(&a);
-        for (i = 0; i < BENCH_N; i++) sink += cal_avg_add(&a, in3[i]);
+        for (i = 0; i < BENCH_N; i++)
+            sink += cal_avg_add(&a, in3[i]);
     } else if (!strcmp(c, "turn_add")) {
         static struct cal_turn t;
         const fx_q16_t off[3] = {100, -200, 300};
         (void)cal_turn_start(&t, off, 1310720);
-        for (i = 0; i < BENCH_N; i++) sink += cal_turn_add(&t, in3[i]);
+        for (i = 0; i < BENCH_N; i++)
+            sink += cal_turn_add(&t, in3[i]);
     }
 }
 
@@ -150,7 +158,8 @@ static void ticks_reset(void)
 }
 
 /* Baselines with the same shapes as the measured calls. */
-__attribute__((noinline)) static int empty_apply(const void *st, const fx_q16_t in[3], fx_q16_t out[3])
+__attribute__((noinline)) static int empty_apply(const void *st, const fx_q16_t in[3],
+                                                 fx_q16_t out[3])
 {
     __asm__ volatile("" ::: "memory");
     out[0] = in[0];
@@ -170,19 +179,23 @@ __attribute__((noinline)) static int empty_eval(const void *m, fx_q16_t t, int32
     return m != NULL;
 }
 
-#define TIMED(name, loop_fn, loop_empty)                                                        \
-    do {                                                                                        \
-        uint32_t t0, t1, t2, t3;                                                                \
-        int i;                                                                                  \
-        ticks_reset();                                                                          \
-        t0 = SYST_CVR;                                                                          \
-        for (i = 0; i < BENCH_N; i++) { loop_fn; }                                              \
-        t1 = SYST_CVR;                                                                          \
-        t2 = SYST_CVR;                                                                          \
-        for (i = 0; i < BENCH_N; i++) { loop_empty; }                                           \
-        t3 = SYST_CVR;                                                                          \
-        printf("BENCH %s %lu %lu\n", name, (unsigned long)((t0 - t1) & 0xFFFFFFu),             \
-               (unsigned long)((t2 - t3) & 0xFFFFFFu));                                        \
+#define TIMED(name, loop_fn, loop_empty)                                           \
+    do {                                                                           \
+        uint32_t t0, t1, t2, t3;                                                   \
+        int i;                                                                     \
+        ticks_reset();                                                             \
+        t0 = SYST_CVR;                                                             \
+        for (i = 0; i < BENCH_N; i++) {                                            \
+            loop_fn;                                                               \
+        }                                                                          \
+        t1 = SYST_CVR;                                                             \
+        t2 = SYST_CVR;                                                             \
+        for (i = 0; i < BENCH_N; i++) {                                            \
+            loop_empty;                                                            \
+        }                                                                          \
+        t3 = SYST_CVR;                                                             \
+        printf("BENCH %s %lu %lu\n", name, (unsigned long)((t0 - t1) & 0xFFFFFFu), \
+               (unsigned long)((t2 - t3) & 0xFFFFFFu));                            \
     } while (0)
 
 int main(void)
@@ -198,11 +211,15 @@ int main(void)
         return 1;
     }
     printf("BENCH_N %d\n", BENCH_N);
-    TIMED("cal_acc_apply", sink += cal_acc_apply(&acc, in3[i], out), sink += empty_apply(&acc, in3[i], out));
-    TIMED("cal_gyro_apply", sink += cal_gyro_apply(&gyro, in3[i], out), sink += empty_apply(&gyro, in3[i], out));
-    TIMED("cal_acc_set_temp", sink += cal_acc_set_temp(&acc, temp[i]), sink += empty_temp(&acc, temp[i]));
+    TIMED("cal_acc_apply", sink += cal_acc_apply(&acc, in3[i], out),
+          sink += empty_apply(&acc, in3[i], out));
+    TIMED("cal_gyro_apply", sink += cal_gyro_apply(&gyro, in3[i], out),
+          sink += empty_apply(&gyro, in3[i], out));
+    TIMED("cal_acc_set_temp", sink += cal_acc_set_temp(&acc, temp[i]),
+          sink += empty_temp(&acc, temp[i]));
     for (k = 0; k < 5; k++) {
-        TIMED(names[k], sink += cal_tmodel_eval(&models[k], temp[i], &y), sink += empty_eval(&models[k], temp[i], &y));
+        TIMED(names[k], sink += cal_tmodel_eval(&models[k], temp[i], &y),
+              sink += empty_eval(&models[k], temp[i], &y));
     }
     return 0;
 }

@@ -22,7 +22,8 @@ static uint8_t mem[2048];
 
 /* The measured calls; noinline so callgrind can toggle on exactly these. */
 __attribute__((noinline)) uint32_t bench_crc(const uint8_t *img);
-__attribute__((noinline)) int bench_load(struct calstore *st, const struct calrec_binding *b, struct calrec *out);
+__attribute__((noinline)) int bench_load(struct calstore *st, const struct calrec_binding *b,
+                                         struct calrec *out);
 __attribute__((noinline)) int bench_save(struct calstore *st, const struct calrec *rec);
 
 uint32_t bench_crc(const uint8_t *img)
@@ -111,13 +112,15 @@ int main(void)
                (unsigned)geos[i].page, (unsigned)geos[i].prog, (unsigned)geos[i].pages);
         simflash_reset_stats(&flash);
         /* Only the first geometry goes through the measured wrappers (one call each). */
-        err |= (i == 0) ? bench_load(&store, &rec.binding, &out) : calstore_load(&store, &rec.binding, &out, NULL);
+        err |= (i == 0) ? bench_load(&store, &rec.binding, &out)
+                        : calstore_load(&store, &rec.binding, &out, NULL);
         print_ops("  load", simflash_get_stats(&flash));
         simflash_reset_stats(&flash);
         err |= (i == 0) ? bench_save(&store, &rec) : calstore_save(&store, &rec, NULL);
         print_ops("  save", simflash_get_stats(&flash));
     }
-    printf("record image %u bytes, CRC 0x%08X, sizeof(struct calstore) %u, sizeof(struct calrec) %u\n",
-           (unsigned)CALREC_IMAGE_SIZE, (unsigned)crc, (unsigned)sizeof store, (unsigned)sizeof rec);
+    printf(
+        "record image %u bytes, CRC 0x%08X, sizeof(struct calstore) %u, sizeof(struct calrec) %u\n",
+        (unsigned)CALREC_IMAGE_SIZE, (unsigned)crc, (unsigned)sizeof store, (unsigned)sizeof rec);
     return err != 0;
 }

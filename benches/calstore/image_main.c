@@ -58,8 +58,13 @@ int main(void);
 int main(void)
 {
     struct calstore_config cfg = {
-        .ops = &drv, .ctx = NULL, .page_size = IMG_PAGE, .prog_size = 8u,
-        .erased_value = CALSTORE_ERASED, .slot_addr = {0u, IMG_PAGE}, .slot_size = IMG_PAGE,
+        .ops = &drv,
+        .ctx = NULL,
+        .page_size = IMG_PAGE,
+        .prog_size = 8u,
+        .erased_value = CALSTORE_ERASED,
+        .slot_addr = {0u, IMG_PAGE},
+        .slot_size = IMG_PAGE,
     };
     struct calrec_binding id = {CALREC_FAMILY_ADIS163XX, 16364u, 0u, 1u, 2u, 3u};
     int err = calstore_init(&store, &cfg);

@@ -36,9 +36,9 @@ static void prepare(void)
         in_b[i] = fx_asr32(i32(unit_rand32(&s)), unit_rand32(&s) % 24u) | 1;
         in_u32[i] = unit_rand32(&s);
         in_u64[i] = ((uint64_t)unit_rand32(&s) << 32) | unit_rand32(&s);
-        in_deg[i] = fx_asr32(i32(unit_rand32(&s)), 6);              /* about +-360 deg in Q16 */
-        in_ratio[i] = fx_asr32(i32(unit_rand32(&s)), 1);            /* [-1, 1) in Q30 */
-        in_acc[i] = fx_asr32(i32(unit_rand32(&s)), 14);             /* +-2 g in Q16 */
+        in_deg[i] = fx_asr32(i32(unit_rand32(&s)), 6);   /* about +-360 deg in Q16 */
+        in_ratio[i] = fx_asr32(i32(unit_rand32(&s)), 1); /* [-1, 1) in Q30 */
+        in_acc[i] = fx_asr32(i32(unit_rand32(&s)), 14);  /* +-2 g in Q16 */
         acc.sum += in_a[i]; /* filled directly: fx_sum_add is itself measured */
     }
     acc.count = BENCH_N;
@@ -46,11 +46,20 @@ static void prepare(void)
 
 /* Wrappers for the inline functions, so that callgrind can toggle on a symbol. */
 __attribute__((noinline)) int32_t bench_fx_add(int32_t a, int32_t b);
-__attribute__((noinline)) int32_t bench_fx_add(int32_t a, int32_t b) { return fx_add(a, b); }
+__attribute__((noinline)) int32_t bench_fx_add(int32_t a, int32_t b)
+{
+    return fx_add(a, b);
+}
 __attribute__((noinline)) int32_t bench_fx_asr32(int32_t a, unsigned s);
-__attribute__((noinline)) int32_t bench_fx_asr32(int32_t a, unsigned s) { return fx_asr32(a, s); }
+__attribute__((noinline)) int32_t bench_fx_asr32(int32_t a, unsigned s)
+{
+    return fx_asr32(a, s);
+}
 __attribute__((noinline)) int32_t bench_fx_abs(int32_t a);
-__attribute__((noinline)) int32_t bench_fx_abs(int32_t a) { return fx_abs(a); }
+__attribute__((noinline)) int32_t bench_fx_abs(int32_t a)
+{
+    return fx_abs(a);
+}
 
 int main(int argc, char **argv)
 {
@@ -58,9 +67,10 @@ int main(int argc, char **argv)
     int i;
     int32_t q;
     fx_q30_t s, c;
-#define RUN(name, expr)                                                  \
-    if (only == NULL || strcmp(only, name) == 0) {                       \
-        for (i = 0; i < BENCH_N; i++) sink += (expr);                    \
+#define RUN(name, expr)                            \
+    if (only == NULL || strcmp(only, name) == 0) { \
+        for (i = 0; i < BENCH_N; i++)              \
+            sink += (expr);                        \
     }
     prepare();
     RUN("bench_fx_add", bench_fx_add(in_a[i], in_b[i]));

@@ -56,34 +56,38 @@ static uint32_t ticks_now(void)
     return SYST_CVR;
 }
 
-#define MEASURE2(name, fn, A, B)                                                     \
-    do {                                                                             \
-        uint32_t t0, t1, t2, t3;                                                     \
-        int i_;                                                                      \
-        ticks_reset();                                                               \
-        t0 = ticks_now();                                                            \
-        for (i_ = 0; i_ < BENCH_CM_N; i_++) sink += fn((A)[i_], (B)[i_]);            \
-        t1 = ticks_now();                                                            \
-        t2 = ticks_now();                                                            \
-        for (i_ = 0; i_ < BENCH_CM_N; i_++) sink += empty2((A)[i_], (B)[i_]);        \
-        t3 = ticks_now();                                                            \
-        printf("BENCH %s %lu %lu\n", name, (unsigned long)((t0 - t1) & 0xFFFFFFu),   \
-               (unsigned long)((t2 - t3) & 0xFFFFFFu));                              \
+#define MEASURE2(name, fn, A, B)                                                   \
+    do {                                                                           \
+        uint32_t t0, t1, t2, t3;                                                   \
+        int i_;                                                                    \
+        ticks_reset();                                                             \
+        t0 = ticks_now();                                                          \
+        for (i_ = 0; i_ < BENCH_CM_N; i_++)                                        \
+            sink += fn((A)[i_], (B)[i_]);                                          \
+        t1 = ticks_now();                                                          \
+        t2 = ticks_now();                                                          \
+        for (i_ = 0; i_ < BENCH_CM_N; i_++)                                        \
+            sink += empty2((A)[i_], (B)[i_]);                                      \
+        t3 = ticks_now();                                                          \
+        printf("BENCH %s %lu %lu\n", name, (unsigned long)((t0 - t1) & 0xFFFFFFu), \
+               (unsigned long)((t2 - t3) & 0xFFFFFFu));                            \
     } while (0)
 
-#define MEASURE1(name, fn, A)                                                        \
-    do {                                                                             \
-        uint32_t t0, t1, t2, t3;                                                     \
-        int i_;                                                                      \
-        ticks_reset();                                                               \
-        t0 = ticks_now();                                                            \
-        for (i_ = 0; i_ < BENCH_CM_N; i_++) sink += (int32_t)fn((A)[i_]);            \
-        t1 = ticks_now();                                                            \
-        t2 = ticks_now();                                                            \
-        for (i_ = 0; i_ < BENCH_CM_N; i_++) sink += empty1((int32_t)(A)[i_]);        \
-        t3 = ticks_now();                                                            \
-        printf("BENCH %s %lu %lu\n", name, (unsigned long)((t0 - t1) & 0xFFFFFFu),   \
-               (unsigned long)((t2 - t3) & 0xFFFFFFu));                              \
+#define MEASURE1(name, fn, A)                                                      \
+    do {                                                                           \
+        uint32_t t0, t1, t2, t3;                                                   \
+        int i_;                                                                    \
+        ticks_reset();                                                             \
+        t0 = ticks_now();                                                          \
+        for (i_ = 0; i_ < BENCH_CM_N; i_++)                                        \
+            sink += (int32_t)fn((A)[i_]);                                          \
+        t1 = ticks_now();                                                          \
+        t2 = ticks_now();                                                          \
+        for (i_ = 0; i_ < BENCH_CM_N; i_++)                                        \
+            sink += empty1((int32_t)(A)[i_]);                                      \
+        t3 = ticks_now();                                                          \
+        printf("BENCH %s %lu %lu\n", name, (unsigned long)((t0 - t1) & 0xFFFFFFu), \
+               (unsigned long)((t2 - t3) & 0xFFFFFFu));                            \
     } while (0)
 
 static int32_t div_q16(int32_t a, int32_t b)
@@ -107,7 +111,8 @@ int main(void)
         in_pos[i] = in_a[i] & INT32_MAX;
         in_rpos[i] = in_ratio[i] & INT32_MAX;
     }
-    for (i = 0; i < BENCH_CM_N; i++) in_acc2[i] = in_acc[(i + 1) % BENCH_CM_N]; /* as bench_fx.c */
+    for (i = 0; i < BENCH_CM_N; i++)
+        in_acc2[i] = in_acc[(i + 1) % BENCH_CM_N]; /* as bench_fx.c */
     printf("BENCH_N %d\n", BENCH_CM_N);
     MEASURE2("fx_mul_q16", fx_mul_q16, in_a, in_b);
     MEASURE2("fx_mul_q30", fx_mul_q30, in_a, in_b);

@@ -28,12 +28,12 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define MODES 4              /* autonull, precision, manual (register), manual (+ processor) */
+#define MODES 4 /* autonull, precision, manual (register), manual (+ processor) */
 #define MAX_RUNS 1000u
 #define FS 819.2
 
 static const char *const mode_name[MODES] = {"autonull", "precision autonull", "manual, register",
-                                              "manual, register + 1/320 correction"};
+                                             "manual, register + 1/320 correction"};
 static const double seed003[MODES] = {0.08, 0.008, 0.006, 0.006};
 
 static double *res_tau[MODES], *res_1s[MODES], *res_est[MODES];
@@ -71,7 +71,7 @@ static struct stats stats_of(double *v, unsigned n)
 static enum sim_adis_imu_variant variant_of(const char *s)
 {
     static const char *const names[SIM_ADIS_IMU_VARIANTS] = {"16360", "16362", "16364",
-                                                              "16365", "16400", "16405"};
+                                                             "16365", "16400", "16405"};
     unsigned i;
     for (i = 0; i < (unsigned)SIM_ADIS_IMU_VARIANTS; i++) {
         if (strcmp(s, names[i]) == 0) {
@@ -179,7 +179,7 @@ int main(int argc, char **argv)
         fprintf(csv, "run,mode,axis,rc,residual_tau_register,residual_tau_with_correction,"
                      "residual_1s_register,estimation_error_register\n");
     }
-    tau[0] = 127.0 / FS;                          /* 2 x 64 - 1 Bartlett taps */
+    tau[0] = 127.0 / FS; /* 2 x 64 - 1 Bartlett taps */
     tau[1] = 30.0;
     tau[2] = (double)GYROCAL_MANUAL_SAMPLES / FS; /* 100.1 s */
     sim_noise_adis_gyro_axis(&ax);
@@ -255,9 +255,9 @@ int main(int argc, char **argv)
         const double next_model = sqrt(white + q * q / 12.0 + 2.0 * corr);
         printf("| %s | %.3g s | %.5f%s | %.3f | %.5f | %.5f | %.5f | %.2f | %.5f | %.5f | %.5f | "
                "%.5f | %.2f | %.5f | %.5f |\n",
-               mode_name[m], t, ref, vs_min ? " (min.)" : "", seed003[m], s.mean_abs, s.rms,
-               s.p95, s.rms / ref, next_model, se.mean_abs, se.rms, se.p95, se.rms / ref,
-               est_model, s1.rms);
+               mode_name[m], t, ref, vs_min ? " (min.)" : "", seed003[m], s.mean_abs, s.rms, s.p95,
+               s.rms / ref, next_model, se.mean_abs, se.rms, se.p95, se.rms / ref, est_model,
+               s1.rms);
         if (check && !(s.rms <= 2.5 * ref && se.rms <= 2.5 * ref)) {
             printf("CHECK FAILED: %s rms %.5f / %.5f > 2.5 x %.5f\n", mode_name[m], s.rms, se.rms,
                    ref);

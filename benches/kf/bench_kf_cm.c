@@ -122,13 +122,16 @@ static void measure(const char *name, int32_t (*fn)(int32_t))
 {
     uint32_t t0, t1, t2, t3;
     int i;
-    for (i = 0; i < WARM; i++) sink += fn(in_z[i]);
+    for (i = 0; i < WARM; i++)
+        sink += fn(in_z[i]);
     ticks_reset();
     t0 = SYST_CVR;
-    for (i = 0; i < BENCH_N; i++) sink += fn(in_z[WARM + i]);
+    for (i = 0; i < BENCH_N; i++)
+        sink += fn(in_z[WARM + i]);
     t1 = SYST_CVR;
     t2 = SYST_CVR;
-    for (i = 0; i < BENCH_N; i++) sink += empty(in_z[WARM + i]);
+    for (i = 0; i < BENCH_N; i++)
+        sink += empty(in_z[WARM + i]);
     t3 = SYST_CVR;
     printf("BENCH %s %lu %lu\n", name, (unsigned long)((t0 - t1) & 0xFFFFFFu),
            (unsigned long)((t2 - t3) & 0xFFFFFFu));
@@ -138,8 +141,12 @@ int main(void)
 {
     uint32_t s = 0x1234567u;
     int i;
-    struct kf_adapt_config ac = {32u, KF_P_ONE_Q16 / 100000000, 41000, KF_P_ONE_Q16 / 5000,
-                                 -FX_Q16_INT(238), KF_P_ONE_Q16 / 5000};
+    struct kf_adapt_config ac = {32u,
+                                 KF_P_ONE_Q16 / 100000000,
+                                 41000,
+                                 KF_P_ONE_Q16 / 5000,
+                                 -FX_Q16_INT(238),
+                                 KF_P_ONE_Q16 / 5000};
     static struct tilt_config tc;
     const int64_t p1 = KF_P_ONE_Q16, p2[4] = {KF_P_ONE_Q16, 0, 0, KF_P_ONE_Q16};
     for (i = 0; i < BENCH_N + WARM; i++) {

@@ -59,8 +59,12 @@ int main(void)
         img_out[0] = kf_x(&filt, 0);
     }
 #elif KF_IMAGE == 3
-    struct kf_adapt_config c = {32u, KF_P_ONE_Q16 / 100000000, 41000, KF_P_ONE_Q16 / 5000,
-                                -FX_Q16_INT(238), KF_P_ONE_Q16 / 5000};
+    struct kf_adapt_config c = {32u,
+                                KF_P_ONE_Q16 / 100000000,
+                                41000,
+                                KF_P_ONE_Q16 / 5000,
+                                -FX_Q16_INT(238),
+                                KF_P_ONE_Q16 / 5000};
     if (kf_adapt_init(&filt, &c) != 0) return 1;
     for (;;) {
         int32_t y;

@@ -41,18 +41,25 @@ extern "C" {
 #include "inclino/tilt.h"
 }
 
-namespace {
+namespace
+{
 
 constexpr double kFs = 819.2;
 constexpr uint32_t kDtNs = 1220703u;
 constexpr double kQ16 = 65536.0;
-constexpr double kP = 281474976710656.0;  // 2^48
-constexpr double kLsb = 0.003333;         // ADIS1636x/1640x accelerometer, g per LSB
-constexpr double kT0 = 4.0;               // step time, s
-constexpr double kDur = 12.0;             // run length, s
+constexpr double kP = 281474976710656.0; // 2^48
+constexpr double kLsb = 0.003333;        // ADIS1636x/1640x accelerometer, g per LSB
+constexpr double kT0 = 4.0;              // step time, s
+constexpr double kDur = 12.0;            // run length, s
 
-int64_t pf(double v) { return static_cast<int64_t>(std::llround(v * kP)); }
-int32_t q16(double v) { return static_cast<int32_t>(std::lround(v * kQ16)); }
+int64_t pf(double v)
+{
+    return static_cast<int64_t>(std::llround(v * kP));
+}
+int32_t q16(double v)
+{
+    return static_cast<int32_t>(std::lround(v * kQ16));
+}
 
 // One run of accelerometer samples (Q16 g) for a pitch step of `step_deg` at kT0.
 std::vector<std::array<int32_t, 3>> make_run(double step_deg, uint64_t seed)
@@ -65,7 +72,8 @@ std::vector<std::array<int32_t, 3>> make_run(double step_deg, uint64_t seed)
     const double order[3] = {1, 2, 4};
     const double bump_sigma[3] = {0.02, 0.01, 0.02};
     double phase[3][3];
-    for (auto &a : phase) std::generate(std::begin(a), std::end(a), [&] { return 2 * M_PI * ud(g); });
+    for (auto &a : phase)
+        std::generate(std::begin(a), std::end(a), [&] { return 2 * M_PI * ud(g); });
     const double wander_phase = 2 * M_PI * ud(g);
     // bumps: start time, length, amplitude per axis
     struct Bump {
@@ -75,7 +83,9 @@ std::vector<std::array<int32_t, 3>> make_run(double step_deg, uint64_t seed)
     for (double t = -1.0;;) {
         t += -std::log(1.0 - ud(g)) / 0.5;
         if (t > kDur) break;
-        Bump b{t, 0.2 + 0.4 * ud(g), {bump_sigma[0] * nd(g), bump_sigma[1] * nd(g), bump_sigma[2] * nd(g)}};
+        Bump b{t,
+               0.2 + 0.4 * ud(g),
+               {bump_sigma[0] * nd(g), bump_sigma[1] * nd(g), bump_sigma[2] * nd(g)}};
         bumps.push_back(b);
     }
     std::vector<std::array<int32_t, 3>> out(n);
@@ -87,7 +97,8 @@ std::vector<std::array<int32_t, 3>> make_run(double step_deg, uint64_t seed)
         crank_angle += 2 * M_PI * f_crank / kFs;
         double a[3] = {-std::sin(th), 0.0, std::cos(th)};
         for (int ax = 0; ax < 3; ax++) {
-            for (int o = 0; o < 3; o++) a[ax] += amp[ax][o] * std::sin(order[o] * crank_angle + phase[ax][o]);
+            for (int o = 0; o < 3; o++)
+                a[ax] += amp[ax][o] * std::sin(order[o] * crank_angle + phase[ax][o]);
             for (const Bump &b : bumps) {
                 if (t >= b.t && t < b.t + b.len) {
                     a[ax] += b.a[ax] * 0.5 * (1 - std::cos(2 * M_PI * (t - b.t) / b.len));
@@ -112,8 +123,14 @@ struct MaFilter final : Filter {
     uint32_t n;
     std::vector<int32_t> line[3];
     avg_moving m[3] = {};
-    explicit MaFilter(uint32_t n_) : n(n_) { init(); }
-    void reset() override { init(); }
+    explicit MaFilter(uint32_t n_) : n(n_)
+    {
+        init();
+    }
+    void reset() override
+    {
+        init();
+    }
     void init()
     {
         for (int i = 0; i < 3; i++) {
@@ -136,8 +153,13 @@ struct FixedKf final : Filter {
     kf f[3] = {};
     bool started[3] = {false, false, false};
     fx_q30_t one = FX_Q30_ONE;
-    FixedKf(int64_t q_, int64_t r_, int64_t p0_) : q(q_), r(r_), p0(p0_) {}
-    void reset() override { std::fill(std::begin(started), std::end(started), false); }
+    FixedKf(int64_t q_, int64_t r_, int64_t p0_) : q(q_), r(r_), p0(p0_)
+    {
+    }
+    void reset() override
+    {
+        std::fill(std::begin(started), std::end(started), false);
+    }
     void push(const std::array<int32_t, 3> &z, std::array<int32_t, 3> *y) override
     {
         const kf_model m{1, 0, &one, nullptr, &q};
@@ -157,8 +179,14 @@ struct FixedKf final : Filter {
 struct AdaptKf final : Filter {
     std::array<kf_adapt_config, 3> c;
     kf_adapt f[3] = {};
-    explicit AdaptKf(const std::array<kf_adapt_config, 3> &c_) : c(c_) { init(); }
-    void reset() override { init(); }
+    explicit AdaptKf(const std::array<kf_adapt_config, 3> &c_) : c(c_)
+    {
+        init();
+    }
+    void reset() override
+    {
+        init();
+    }
     void init()
     {
         for (int i = 0; i < 3; i++)
@@ -166,7 +194,8 @@ struct AdaptKf final : Filter {
     }
     void push(const std::array<int32_t, 3> &z, std::array<int32_t, 3> *y) override
     {
-        for (int i = 0; i < 3; i++) kf_adapt_process(&f[i], z[i], &(*y)[i], nullptr);
+        for (int i = 0; i < 3; i++)
+            kf_adapt_process(&f[i], z[i], &(*y)[i], nullptr);
     }
 };
 
@@ -178,7 +207,7 @@ Result evaluate(Filter &flt, double step_deg, int runs, uint64_t seed)
 {
     const size_t n = static_cast<size_t>(kDur * kFs);
     const size_t k0 = static_cast<size_t>(std::ceil(kT0 * kFs));
-    const size_t w0 = static_cast<size_t>((kT0 + 4.0) * kFs);  // noise window: 4..8 s after the step
+    const size_t w0 = static_cast<size_t>((kT0 + 4.0) * kFs); // noise window: 4..8 s after the step
     const size_t a0 = k0 + static_cast<size_t>(0.1 * kFs), a1 = k0 + static_cast<size_t>(1.0 * kFs);
     std::vector<double> mean(n, 0.0);
     double se = 0, sm = 0, sa = 0;
@@ -210,7 +239,8 @@ Result evaluate(Filter &flt, double step_deg, int runs, uint64_t seed)
     res.rms_after = std::sqrt(sa / cnta);
     // 10-90 % of the ensemble mean, from the step on (relative to the pre-step mean level)
     double base = 0;
-    for (size_t k = k0 - static_cast<size_t>(kFs); k < k0; k++) base += mean[k] / kFs;
+    for (size_t k = k0 - static_cast<size_t>(kFs); k < k0; k++)
+        base += mean[k] / kFs;
     size_t k10 = 0, k90 = 0;
     for (size_t k = k0; k < n; k++) {
         const double frac = (mean[k] - base) / step_deg;
@@ -228,7 +258,7 @@ Result evaluate(Filter &flt, double step_deg, int runs, uint64_t seed)
 // Fixed filter tuned to the moving average's white-noise level: K = 2 / (N + 1) in steady state.
 FixedKf make_fixed(uint32_t n)
 {
-    const double k = 2.0 / (n + 1.0), r = 0.03 * 0.03;  // R: total disturbance on x, g^2
+    const double k = 2.0 / (n + 1.0), r = 0.03 * 0.03; // R: total disturbance on x, g^2
     const double q = r * k * k / (1 - k);
     return FixedKf(pf(q), pf(r), pf(r));
 }
@@ -341,8 +371,8 @@ int cmd_tune(int argc, char **argv)
                 for (double cf : {0.0, 0.1}) {
                     AdaptKf ak(adapt_tuned(n, k, st, cf, seed + 99991u, km));
                     const Result r = evaluate(ak, 5.0, runs, seed);
-                    std::printf("k %2u Ks x %.2f step %.3f Cfrac %.1f: rms %.4f rise %.1f ms%s\n", k,
-                                km, st, cf, r.rms, r.rise * 1e3,
+                    std::printf("k %2u Ks x %.2f step %.3f Cfrac %.1f: rms %.4f rise %.1f ms%s\n",
+                                k, km, st, cf, r.rms, r.rise * 1e3,
                                 (r.rms <= rm.rms && r.rise <= rm.rise / 4) ? "  GOAL" : "");
                     std::fflush(stdout);
                 }
@@ -368,7 +398,8 @@ int cmd_step(int argc, char **argv)
                     ac[ax].c / kP, ac[ax].d / 4294967296.0, ac[ax].a / kP, ac[ax].b / kQ16,
                     ac[ax].p0 / kP);
     }
-    std::printf("| step | filter | rms error 4..8 s after (deg) | mean error (deg) | rms error 0.1..1 s after (deg) | 10-90 %% rise (ms) | step to 90 %% (ms) |\n");
+    std::printf(
+        "| step | filter | rms error 4..8 s after (deg) | mean error (deg) | rms error 0.1..1 s after (deg) | 10-90 %% rise (ms) | step to 90 %% (ms) |\n");
     std::printf("|---|---|---:|---:|---:|---:|---:|\n");
     std::vector<double> steps = {5.0, 1.0};
     if (arg_long(argc, argv, "--more", 0)) steps = {5.0, 1.0, 2.0, 10.0, 20.0};
@@ -408,7 +439,7 @@ int cmd_cost(const char *which, long count)
         }
     } else if (w == "kf1" || w == "kf2" || w == "kf4") {
         const unsigned n = w == "kf1" ? 1 : (w == "kf2" ? 2 : 4);
-        const int32_t one = FX_Q30_ONE, dt = 1310720;  // 5/4096 s
+        const int32_t one = FX_Q30_ONE, dt = 1310720; // 5/4096 s
         int64_t p0[16] = {0}, q[16] = {0};
         fx_q30_t a[16] = {0}, b[4] = {0}, h[4] = {one, 0, 0, 0};
         for (unsigned i = 0; i < n; i++) {
@@ -416,7 +447,7 @@ int cmd_cost(const char *which, long count)
             p0[i * n + i] = pf(1.0);
             q[i * n + i] = pf(1e-6);
         }
-        if (n >= 2) {  // angle/bias (kf2) or two of them (kf4)
+        if (n >= 2) { // angle/bias (kf2) or two of them (kf4)
             a[0 * n + 1] = -dt;
             b[0] = dt;
         }
@@ -452,8 +483,9 @@ int cmd_cost(const char *which, long count)
     } else if (w.rfind("tilt-", 0) == 0) {
         tilt_config c;
         tilt_config_default(&c, kDtNs);
-        c.mode = w == "tilt-feedback" ? TILT_MODE_FEEDBACK
-                 : (w == "tilt-printed" ? TILT_MODE_SEED_PRINTED : TILT_MODE_KF2);
+        c.mode = w == "tilt-feedback"
+                     ? TILT_MODE_FEEDBACK
+                     : (w == "tilt-printed" ? TILT_MODE_SEED_PRINTED : TILT_MODE_KF2);
         tilt t;
         tilt_init(&t, &c);
         for (long i = 0; i < count; i++) {
@@ -475,15 +507,17 @@ int cmd_cost(const char *which, long count)
     return 0;
 }
 
-}  // namespace
+} // namespace
 
 int main(int argc, char **argv)
 {
     if (argc >= 2 && std::strcmp(argv[1], "step") == 0) return cmd_step(argc, argv);
     if (argc >= 2 && std::strcmp(argv[1], "tune") == 0) return cmd_tune(argc, argv);
-    if (argc >= 4 && std::strcmp(argv[1], "cost") == 0) return cmd_cost(argv[2], std::strtol(argv[3], nullptr, 0));
-    std::fprintf(stderr,
-                 "usage: kf_bench step [--runs R] [--n N] [--seed S] [--k K --C C --D D --A A --B B --p0 P]\n"
-                 "       kf_bench cost ma|kf1|kf2|kf4|adapt|tilt-feedback|tilt-printed|tilt-kf2 COUNT\n");
+    if (argc >= 4 && std::strcmp(argv[1], "cost") == 0)
+        return cmd_cost(argv[2], std::strtol(argv[3], nullptr, 0));
+    std::fprintf(
+        stderr,
+        "usage: kf_bench step [--runs R] [--n N] [--seed S] [--k K --C C --D D --A A --B B --p0 P]\n"
+        "       kf_bench cost ma|kf1|kf2|kf4|adapt|tilt-feedback|tilt-printed|tilt-kf2 COUNT\n");
     return 2;
 }

@@ -86,19 +86,54 @@ static int bus_table(void)
 /* A HAL that does almost nothing (time is a counter the delays move): the engine's own cost. */
 static unsigned null_level;
 static uint64_t null_time;
-static void n_write(void *c, hal_pin_t p, bool l) { (void)c; (void)p; null_level ^= l; }
-static bool n_read(void *c, hal_pin_t p) { (void)c; return (p & 1u) != 0; }
-static uint64_t n_now(void *c) { (void)c; return null_time; }
-static void n_delay(void *c, uint32_t ns) { (void)c; null_time += ns; }
+static void n_write(void *c, hal_pin_t p, bool l)
+{
+    (void)c;
+    (void)p;
+    null_level ^= l;
+}
+static bool n_read(void *c, hal_pin_t p)
+{
+    (void)c;
+    return (p & 1u) != 0;
+}
+static uint64_t n_now(void *c)
+{
+    (void)c;
+    return null_time;
+}
+static void n_delay(void *c, uint32_t ns)
+{
+    (void)c;
+    null_time += ns;
+}
 static int n_attach(void *c, hal_pin_t p, enum hal_edge e, hal_irq_cb cb, void *a)
 {
-    (void)c; (void)p; (void)e; (void)cb; (void)a;
+    (void)c;
+    (void)p;
+    (void)e;
+    (void)cb;
+    (void)a;
     return 0;
 }
-static int n_wait(void *c, uint64_t d) { (void)c; (void)d; return 0; }
-static uint32_t n_enter(void *c) { (void)c; return 0; }
-static void n_exit(void *c, uint32_t k) { (void)c; (void)k; }
-static const struct hal_ops null_ops = {n_write, n_read, n_now, n_delay, n_attach, n_wait, n_enter, n_exit};
+static int n_wait(void *c, uint64_t d)
+{
+    (void)c;
+    (void)d;
+    return 0;
+}
+static uint32_t n_enter(void *c)
+{
+    (void)c;
+    return 0;
+}
+static void n_exit(void *c, uint32_t k)
+{
+    (void)c;
+    (void)k;
+}
+static const struct hal_ops null_ops = {n_write,  n_read, n_now,   n_delay,
+                                        n_attach, n_wait, n_enter, n_exit};
 
 static int cost(unsigned long n)
 {

@@ -64,20 +64,20 @@ static int flash_none_erase(void *ctx, uint32_t addr)
 }
 
 static const struct calstore_flash_ops epb_flash_none = {flash_none_read, flash_none_program,
-                                                          flash_none_erase};
+                                                         flash_none_erase};
 
 /* Diagnostic requests (end of line). */
 enum epb_diag_cmd {
     EPB_DIAG_NONE = 0,
-    EPB_DIAG_FACE = 1,   /* average face `face` (enum cal_face) for `n` samples */
-    EPB_DIAG_SAVE = 2,   /* six-position offset/gain from the six faces, store the record */
+    EPB_DIAG_FACE = 1, /* average face `face` (enum cal_face) for `n` samples */
+    EPB_DIAG_SAVE = 2, /* six-position offset/gain from the six faces, store the record */
 };
 
 struct epb_diag {
-    uint32_t cmd;        /* enum epb_diag_cmd; cleared when done */
+    uint32_t cmd; /* enum epb_diag_cmd; cleared when done */
     uint32_t face;
     uint32_t n;
-    int32_t status;      /* result of the last request */
+    int32_t status; /* result of the last request */
 };
 
 volatile struct epb_diag epb_diag;
@@ -143,7 +143,8 @@ static void diag_serve(void)
 
 void epb_image_run(const struct hal *hal)
 {
-    static const struct calstore_config fc = {&epb_flash_none, NULL, EPB_FLASH_PAGE, EPB_FLASH_PROG,
+    static const struct calstore_config fc = {&epb_flash_none, NULL,
+                                              EPB_FLASH_PAGE,  EPB_FLASH_PROG,
                                               CALSTORE_ERASED, {EPB_FLASH_SLOT0, EPB_FLASH_SLOT1},
                                               EPB_FLASH_PAGE};
     /* Static, not on the stack: the M0+ image has 1 KiB of stack (docs/build.md). */

@@ -90,8 +90,8 @@ static void board_write(const char *s)
  */
 void rt_fault(uint32_t cause, uintptr_t fault_sp)
 {
-    static const char *const names[] = {"thread", "reset", "NMI", "HardFault", "MemManage",
-                                        "BusFault", "UsageFault"};
+    static const char *const names[] = {"thread",    "reset",    "NMI",       "HardFault",
+                                        "MemManage", "BusFault", "UsageFault"};
     char hex[11];
     const uint32_t block[2] = {SEMIHOST_ADP_APPLICATION_EXIT, BOARD_FAULT_STATUS};
 

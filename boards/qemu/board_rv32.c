@@ -44,8 +44,8 @@ void rt_fault(uint32_t cause, uintptr_t fault_sp)
     /* Zicsr: see hal/rt/riscv/crt0.S. */
     __asm volatile(".option push\n\t.option arch, +zicsr\n\tcsrr %0, mepc\n\t.option pop"
                    : "=r"(mepc));
-    printf("FAULT: mcause 0x%lx, mepc 0x%lx, sp 0x%lx\n", (unsigned long)cause,
-           (unsigned long)mepc, (unsigned long)fault_sp);
+    printf("FAULT: mcause 0x%lx, mepc 0x%lx, sp 0x%lx\n", (unsigned long)cause, (unsigned long)mepc,
+           (unsigned long)fault_sp);
     (void)fflush(stdout);
     abort();
 }

@@ -36,8 +36,7 @@ void adis_dr_sync(const struct hal *hal, struct adis_dr *dr)
     }
 }
 
-int adis_dr_wait(const struct hal *hal, struct adis_dr *dr, uint64_t deadline_ns,
-                 uint32_t *pending)
+int adis_dr_wait(const struct hal *hal, struct adis_dr *dr, uint64_t deadline_ns, uint32_t *pending)
 {
     uint32_t n = 0;
     int err = INC_OK;

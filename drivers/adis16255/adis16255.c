@@ -96,7 +96,7 @@ uint32_t adis16255_sample_period_us(uint8_t smpl_prd)
 {
     /* TS = TB * (NS + 1) (A4). */
     const uint32_t tb = (smpl_prd & ADIS16255_SMPL_PRD_TB) ? ADIS16255_TB_SLOW_US
-                                                            : ADIS16255_TB_FAST_US;
+                                                           : ADIS16255_TB_FAST_US;
     return tb * ((uint32_t)(smpl_prd & ADIS16255_SMPL_PRD_NS_MASK) + 1u);
 }
 
@@ -142,8 +142,8 @@ int adis16255_status_decode(uint16_t raw, struct adis16255_status *out)
 const char *adis16255_status_bit_name(unsigned bit)
 {
     static const char *const names[10] = {
-        "supply<4.75V", "supply>5.25V", "flash-update-fail", "spi-comm-fail", "overrange",
-        "self-test-fail", "flash-checksum", "reserved", "alarm1", "alarm2",
+        "supply<4.75V",   "supply>5.25V",   "flash-update-fail", "spi-comm-fail", "overrange",
+        "self-test-fail", "flash-checksum", "reserved",          "alarm1",        "alarm2",
     };
     return bit < 10u ? names[bit] : "reserved";
 }
@@ -353,7 +353,8 @@ static int identify(struct adis16255 *st)
         return INC_ERR_ID;
     }
     range = (v[2] & ADIS16255_SENS_AVG_RANGE_MASK) >> ADIS16255_SENS_AVG_RANGE_SHIFT;
-    if ((v[2] & (uint16_t)~(ADIS16255_SENS_AVG_RANGE_MASK | ADIS16255_SENS_AVG_FILTER_MASK)) != 0u ||
+    if ((v[2] & (uint16_t) ~(ADIS16255_SENS_AVG_RANGE_MASK | ADIS16255_SENS_AVG_FILTER_MASK)) !=
+            0u ||
         (range != 1u && range != 2u && range != 4u)) {
         st->id_check = ADIS16255_ID_SENS_AVG;
         return INC_ERR_ID;
@@ -461,7 +462,8 @@ int adis16255_init(struct adis16255 *st, const struct adis16255_cfg *cfg)
     }
     if (err == INC_OK && cfg->dr_pin != HAL_PIN_NONE) {
         err = hal_irq_attach(cfg->hal, cfg->dr_pin,
-                             cfg->dr_active_high ? HAL_EDGE_RISING : HAL_EDGE_FALLING, adis_dr_isr, &st->dr);
+                             cfg->dr_active_high ? HAL_EDGE_RISING : HAL_EDGE_FALLING, adis_dr_isr,
+                             &st->dr);
         st->dr_attached = err == INC_OK;
         adis_dr_sync(st->cfg.hal, &st->dr);
     }
@@ -784,7 +786,8 @@ int adis16255_flash_update(struct adis16255 *st)
         err = adis_read_reg(&st->dev, ADIS16255_REG_ENDURANCE, &before);
     }
     if (err == INC_OK) {
-        err = command(st, ADIS16255_CMD_FLASH_UPDATE, (uint64_t)ADIS16255_FLASH_UPDATE_MS * NS_PER_MS);
+        err = command(st, ADIS16255_CMD_FLASH_UPDATE,
+                      (uint64_t)ADIS16255_FLASH_UPDATE_MS * NS_PER_MS);
     }
     if (err == INC_OK) {
         err = adis_read_reg(&st->dev, ADIS16255_REG_ENDURANCE, &after);

@@ -23,7 +23,8 @@ static const uint8_t chan_addr[2][ADIS_IMU_CH_COUNT] = {
 
 static void timing_for(bool low_power, bool burst, struct spi_timing *t)
 {
-    uint32_t period = low_power ? ADIS_IMU_SCLK_PERIOD_LOW_POWER_NS : ADIS_IMU_SCLK_PERIOD_NORMAL_NS;
+    uint32_t period = low_power ? ADIS_IMU_SCLK_PERIOD_LOW_POWER_NS
+                                : ADIS_IMU_SCLK_PERIOD_NORMAL_NS;
     if (burst && period < ADIS_IMU_SCLK_PERIOD_BURST_NS) {
         period = ADIS_IMU_SCLK_PERIOD_BURST_NS;
     }
@@ -131,7 +132,8 @@ static int resync(struct adis_imu *s)
     if (err == INC_OK && s->dr_enabled) {
         const uint16_t want = (uint16_t)(ADIS_IMU_MSC_DR_EN |
                                          (s->dr_active_low ? 0u : ADIS_IMU_MSC_DR_POL_HIGH) |
-                                         (s->dr_line == ADIS_IMU_DR_DIO2 ? ADIS_IMU_MSC_DR_LINE_DIO2 : 0u));
+                                         (s->dr_line == ADIS_IMU_DR_DIO2 ? ADIS_IMU_MSC_DR_LINE_DIO2
+                                                                         : 0u));
         if ((s->msc_ctrl & 0x0007u) != want) {
             err = write_dr(s, true, (enum adis_imu_dr_line)s->dr_line, s->dr_active_low);
         }
@@ -152,7 +154,8 @@ static int check_cfg(const struct adis_imu_cfg *cfg)
         return err;
     }
     if (cfg->cs == HAL_PIN_NONE || cfg->dr_line > (uint8_t)ADIS_IMU_DR_DIO2 ||
-        (cfg->variant >= (uint8_t)ADIS_IMU_VARIANT_COUNT && cfg->variant != (uint8_t)ADIS_IMU_ANY)) {
+        (cfg->variant >= (uint8_t)ADIS_IMU_VARIANT_COUNT &&
+         cfg->variant != (uint8_t)ADIS_IMU_ANY)) {
         return INC_ERR_INVAL;
     }
     return INC_OK;
@@ -838,8 +841,7 @@ int adis_imu_get_accel_offset(struct adis_imu *s, unsigned axis, int32_t *counts
 
 /* ---- data-ready ---- */
 
-int adis_imu_dr_config(struct adis_imu *s, bool enable, enum adis_imu_dr_line line,
-                       bool active_low)
+int adis_imu_dr_config(struct adis_imu *s, bool enable, enum adis_imu_dr_line line, bool active_low)
 {
     const struct hal *hal;
     int err = check_ready(s);

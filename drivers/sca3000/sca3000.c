@@ -8,10 +8,10 @@
 
 /* Output data rate in mHz per variant and MODE[1:0] (sensors.md 1.6, Linux chip table). */
 static const uint32_t odr_table[4][3] = {
-    {250000u, 250000u, 0u},      /* D01: normal, bypass */
-    {125000u, 62500u, 0u},       /* E02: normal, narrow */
-    {100000u, 50000u, 400000u},  /* E04: normal, narrow, wide */
-    {200000u, 50000u, 400000u},  /* E05 */
+    {250000u, 250000u, 0u},     /* D01: normal, bypass */
+    {125000u, 62500u, 0u},      /* E02: normal, narrow */
+    {100000u, 50000u, 400000u}, /* E04: normal, narrow, wide */
+    {200000u, 50000u, 400000u}, /* E05 */
 };
 
 static bool readable(uint8_t addr)
@@ -32,10 +32,8 @@ static bool readable(uint8_t addr)
     case SCA3000_REG_BUF_COUNT:
     case SCA3000_REG_INT_STATUS:
     case SCA3000_REG_INT_MASK:
-    case SCA3000_REG_CTRL_DATA:
-        return true;
-    default:
-        return false;
+    case SCA3000_REG_CTRL_DATA: return true;
+    default: return false;
     }
 }
 
@@ -233,8 +231,8 @@ int sca3000_init(struct sca3000 *dev, const struct sca3000_cfg *cfg)
         }
     }
     dev->variant = cfg->variant;
-    dev->expected_revid =
-        cfg->expected_revid != 0u ? cfg->expected_revid : (uint8_t)SCA3000_REVID_DEFAULT;
+    dev->expected_revid = cfg->expected_revid != 0u ? cfg->expected_revid
+                                                    : (uint8_t)SCA3000_REVID_DEFAULT;
     dev->hal = cfg->hal;
     dev->int_pin = cfg->int_pin;
     err = spi_dev_init(&dev->spi, cfg->bus, &cfg->spi);
@@ -475,16 +473,13 @@ int sca3000_unlock(struct sca3000 *dev)
 static bool ind_valid(const struct sca3000 *dev, uint8_t sel)
 {
     switch (sel) {
-    case SCA3000_IND_I2C_DISABLE:
-        return dev->variant == SCA3000_D01;
+    case SCA3000_IND_I2C_DISABLE: return dev->variant == SCA3000_D01;
     case SCA3000_IND_MD_CTRL:
     case SCA3000_IND_MD_Y_TH:
     case SCA3000_IND_MD_X_TH:
     case SCA3000_IND_MD_Z_TH:
-    case SCA3000_IND_OUT_CTRL:
-        return true;
-    default:
-        return false;
+    case SCA3000_IND_OUT_CTRL: return true;
+    default: return false;
     }
 }
 
@@ -544,7 +539,8 @@ int sca3000_ind_write(struct sca3000 *dev, uint8_t sel, uint8_t val)
     if (err != INC_OK) {
         return err;
     }
-    if (sel == SCA3000_IND_OUT_CTRL && (old & SCA3000_OUT_CTRL_PROTECT) != SCA3000_OUT_CTRL_PROTECT) {
+    if (sel == SCA3000_IND_OUT_CTRL &&
+        (old & SCA3000_OUT_CTRL_PROTECT) != SCA3000_OUT_CTRL_PROTECT) {
         /* OUT_CTRL[7:5] must read set on a working part: writing them back clear would stop it. */
         return INC_ERR_DEVICE;
     }
@@ -654,8 +650,8 @@ int sca3000_ring_read(struct sca3000 *dev, int16_t *values, size_t cap, size_t *
             return err;
         }
         for (i = 0; i < k; i++) {
-            values[done + i] =
-                sca3000_decode_ring11((uint16_t)(((unsigned)b[2u * i] << 8) | b[2u * i + 1u]));
+            values[done + i] = sca3000_decode_ring11(
+                (uint16_t)(((unsigned)b[2u * i] << 8) | b[2u * i + 1u]));
         }
         done += k;
     }

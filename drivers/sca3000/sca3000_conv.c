@@ -22,14 +22,14 @@ int sca3000_decode_accel(uint16_t word, int16_t *count)
     if ((word & 0x0007u) != 0u) {
         return INC_ERR_BUS;
     }
-    u = (uint32_t)word >> 3;                  /* 0..8191, bit 12 is the sign */
+    u = (uint32_t)word >> 3; /* 0..8191, bit 12 is the sign */
     *count = (int16_t)((int32_t)u - ((u & 0x1000u) != 0u ? 8192 : 0));
     return INC_OK;
 }
 
 int16_t sca3000_decode_ring11(uint16_t word)
 {
-    const uint32_t u = (uint32_t)word >> 5;   /* 0..2047, bit 10 is the sign */
+    const uint32_t u = (uint32_t)word >> 5; /* 0..2047, bit 10 is the sign */
     const int32_t s = (int32_t)u - ((u & 0x400u) != 0u ? 2048 : 0);
     return (int16_t)(s * 4);
 }
@@ -59,7 +59,7 @@ int sca3000_accel_to_ug(int32_t counts, enum sca3000_variant v, int32_t *ug)
     if (counts < -4096 || counts > 4095) {
         return INC_ERR_RANGE;
     }
-    *ug = counts * (int32_t)lsb;              /* |.| <= 4096 * 6250 = 25.6e6 */
+    *ug = counts * (int32_t)lsb; /* |.| <= 4096 * 6250 = 25.6e6 */
     return INC_OK;
 }
 

@@ -22,7 +22,8 @@ uint32_t spi_period_for_hz(uint32_t hz)
 
 static int check_cfg(const struct spi_dev_cfg *cfg)
 {
-    if (cfg->cs == HAL_PIN_NONE || cfg->mode > SPI_MODE_3 || (cfg->bits != 8u && cfg->bits != 16u)) {
+    if (cfg->cs == HAL_PIN_NONE || cfg->mode > SPI_MODE_3 ||
+        (cfg->bits != 8u && cfg->bits != 16u)) {
         return INC_ERR_INVAL;
     }
     return spi_timing_check(&cfg->timing);
@@ -83,7 +84,7 @@ int spi_transfer(struct spi_dev *dev, const uint16_t *tx, uint16_t *rx, size_t n
         return INC_ERR_INVAL;
     }
     if (tx != NULL && dev->cfg.bits < 16u) {
-        uint16_t over = (uint16_t)~((1u << dev->cfg.bits) - 1u);
+        uint16_t over = (uint16_t) ~((1u << dev->cfg.bits) - 1u);
         size_t i;
         for (i = 0; i < n; i++) {
             if (tx[i] & over) {

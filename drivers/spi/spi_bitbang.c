@@ -80,7 +80,7 @@ static int bb_transfer(void *ctx, struct spi_dev *dev, const uint16_t *tx, uint1
                 in = (uint16_t)((in << 1) | (hal_pin_read(hal, miso) ? 1u : 0u));
                 hal_pin_write(hal, sclk, !idle); /* leading edge: both sides sample */
                 wait(hal, h1);
-                hal_pin_write(hal, sclk, idle);  /* trailing edge: the part shifts */
+                hal_pin_write(hal, sclk, idle); /* trailing edge: the part shifts */
             } else {
                 wait(hal, before);
                 hal_pin_write(hal, sclk, !idle); /* leading edge: the part shifts */
@@ -90,7 +90,7 @@ static int bb_transfer(void *ctx, struct spi_dev *dev, const uint16_t *tx, uint1
                 }
                 wait(hal, h1);
                 in = (uint16_t)((in << 1) | (hal_pin_read(hal, miso) ? 1u : 0u));
-                hal_pin_write(hal, sclk, idle);  /* trailing edge: both sides sample */
+                hal_pin_write(hal, sclk, idle); /* trailing edge: both sides sample */
             }
         }
         if (rx != NULL) {

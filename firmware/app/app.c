@@ -37,7 +37,7 @@ static bool budget_ok(const struct app_budget *b)
 }
 
 /* Q16 of milli-g, for the constants below. */
-#define MG(x) ((fx_q16_t)(((x) * 65536 + 500) / 1000))
+#define MG(x) ((fx_q16_t)(((x)*65536 + 500) / 1000))
 
 int app_cfg_default(struct app_cfg *c, uint32_t rate_mhz)
 {
@@ -56,9 +56,9 @@ int app_cfg_default(struct app_cfg *c, uint32_t rate_mhz)
     c->avg_n = 8u * w;
     c->still.window = w;
     c->still.windows_required = 2u;
-    c->still.gyro_var_max = (uint64_t)32768u * 32768u;          /* (0.5 deg/s)^2, Q16^2 */
+    c->still.gyro_var_max = (uint64_t)32768u * 32768u;            /* (0.5 deg/s)^2, Q16^2 */
     c->still.accel_var_max = (uint64_t)MG(30) * (uint64_t)MG(30); /* (30 mg)^2, Q16^2 */
-    c->still.gyro_mean_max = (uint32_t)FX_Q16_ONE;               /* 1 deg/s */
+    c->still.gyro_mean_max = (uint32_t)FX_Q16_ONE;                /* 1 deg/s */
     c->still.accel_one_g = FX_Q16_ONE;
     c->still.accel_norm_tol = (uint32_t)MG(50);
     c->still.accel_drift_max = (uint32_t)MG(15);
@@ -81,12 +81,12 @@ int app_cfg_default(struct app_cfg *c, uint32_t rate_mhz)
     c->budget.nonlinearity_g = MG(10);
     c->budget.temp_comp_g = MG(10);
     c->budget.temp_uncomp_g = MG(50);
-    c->budget.tscale_uncomp = (fx_q30_t)5368709;     /* 0.005 */
+    c->budget.tscale_uncomp = (fx_q30_t)5368709;      /* 0.005 */
     c->budget.sensitivity_uncal = (fx_q30_t)32212255; /* 0.03 */
     c->budget.offset_uncal_g = MG(15);
     c->budget.noise_sigma_g = MG(4);
     c->budget.lifetime_runs = 200000u;
-    c->budget.exceed_expected = 66;                  /* 0.001 in Q16 */
+    c->budget.exceed_expected = 66; /* 0.001 in Q16 */
     c->temp_default_c = FX_Q16_INT(25);
     c->temp_step_c = FX_Q16_HALF;
     c->temp_margin_c = FX_Q16_ONE;
@@ -213,10 +213,8 @@ static bool tmodel_covers(const struct calrec_tmodel *m, fx_q16_t t, fx_q16_t ma
         lo = m->t_ref;
         hi = (int64_t)m->t_ref + (int64_t)(m->n > 0 ? m->n - 1 : 0) * m->t_span;
         break;
-    case CALREC_TM_LORENTZ:
-        return true;
-    default:
-        return false;
+    case CALREC_TM_LORENTZ: return true;
+    default: return false;
     }
     return (int64_t)t >= lo - margin && (int64_t)t <= hi + margin;
 }
@@ -282,7 +280,8 @@ static void finish_block(struct app *a, struct app_result *res)
     sc.budget.offset_g = cal ? b->offset_g : b->offset_uncal_g;
     sc.budget.nonlinearity_g = b->nonlinearity_g;
     sc.budget.temperature_g = off_comp ? b->temp_comp_g : b->temp_uncomp_g;
-    sc.budget.noise_sigma_g = res->sigma_meas_g > b->noise_sigma_g ? res->sigma_meas_g : b->noise_sigma_g;
+    sc.budget.noise_sigma_g = res->sigma_meas_g > b->noise_sigma_g ? res->sigma_meas_g
+                                                                   : b->noise_sigma_g;
     sc.budget.k_sigma = a->k_sigma;
     res->budget = sc.budget;
 

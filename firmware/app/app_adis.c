@@ -46,8 +46,10 @@ static int adis_read(void *ctx, struct app_sample *out)
      * adis_imu_to_phys, without its whole-sample struct on the stack). */
     out->flags = APP_S_HAVE_GYRO | APP_S_HAVE_TEMP;
     for (i = 0; i < 3u; i++) {
-        out->accel_g[i] = adis_imu_accel_g_q16(s.counts[ADIS_IMU_CH_ACCEL_X + i], ad->imu->info->accel_lsb_ug);
-        out->gyro_dps[i] = adis_imu_gyro_dps_q16(s.counts[ADIS_IMU_CH_GYRO_X + i], (enum adis_imu_range)s.gyro_range);
+        out->accel_g[i] = adis_imu_accel_g_q16(s.counts[ADIS_IMU_CH_ACCEL_X + i],
+                                               ad->imu->info->accel_lsb_ug);
+        out->gyro_dps[i] = adis_imu_gyro_dps_q16(s.counts[ADIS_IMU_CH_GYRO_X + i],
+                                                 (enum adis_imu_range)s.gyro_range);
         if (at_end(s.counts[ADIS_IMU_CH_ACCEL_X + i])) {
             out->flags |= APP_S_ACCEL_SAT;
         }
@@ -62,7 +64,8 @@ static int adis_read(void *ctx, struct app_sample *out)
         struct fx_sum t;
         fx_sum_reset(&t);
         for (i = 0; i < 3u; i++) {
-            (void)fx_sum_add(&t, adis_imu_temp_c_q16(s.counts[ADIS_IMU_CH_TEMP0 + i], ADIS_IMU_FAMILY_1636X));
+            (void)fx_sum_add(
+                &t, adis_imu_temp_c_q16(s.counts[ADIS_IMU_CH_TEMP0 + i], ADIS_IMU_FAMILY_1636X));
         }
         (void)fx_sum_mean(&t, &out->temp_c);
     }

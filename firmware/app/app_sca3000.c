@@ -15,8 +15,8 @@
 #define APP_SCA3000_COUNT_MIN (-4096)
 #define APP_SCA3000_COUNT_MAX 4095
 
-static const uint32_t variant_code[4] = {CALREC_SCA3000_D01, CALREC_SCA3000_E02,
-                                         CALREC_SCA3000_E04, CALREC_SCA3000_E05};
+static const uint32_t variant_code[4] = {CALREC_SCA3000_D01, CALREC_SCA3000_E02, CALREC_SCA3000_E04,
+                                         CALREC_SCA3000_E05};
 
 static int sca_read(void *ctx, struct app_sample *out)
 {

@@ -20,12 +20,15 @@ int sim_board_init(struct sim_board *b)
     sim_violation_log_init(&b->log);
     sim_pinbus_init(&b->bus, &b->clk, &b->log);
     err = sim_pinbus_define(&b->bus, SIM_BOARD_SCLK, "sclk", SIM_PULL_KEEPER, true);
-    if (err == INC_OK) err = sim_pinbus_define(&b->bus, SIM_BOARD_MOSI, "mosi", SIM_PULL_KEEPER, false);
+    if (err == INC_OK)
+        err = sim_pinbus_define(&b->bus, SIM_BOARD_MOSI, "mosi", SIM_PULL_KEEPER, false);
     if (err == INC_OK) err = sim_pinbus_define(&b->bus, SIM_BOARD_MISO, "miso", SIM_PULL_UP, true);
     for (i = 0; i < 4u && err == INC_OK; i++) {
         err = sim_pinbus_define(&b->bus, SIM_BOARD_CS(i), cs_names[i], SIM_PULL_UP, true);
-        if (err == INC_OK) err = sim_pinbus_define(&b->bus, SIM_BOARD_DR(i), dr_names[i], SIM_PULL_DOWN, false);
-        if (err == INC_OK) err = sim_pinbus_define(&b->bus, SIM_BOARD_RST(i), rst_names[i], SIM_PULL_UP, true);
+        if (err == INC_OK)
+            err = sim_pinbus_define(&b->bus, SIM_BOARD_DR(i), dr_names[i], SIM_PULL_DOWN, false);
+        if (err == INC_OK)
+            err = sim_pinbus_define(&b->bus, SIM_BOARD_RST(i), rst_names[i], SIM_PULL_UP, true);
     }
     if (err != INC_OK) {
         return err;

@@ -72,8 +72,8 @@ void epb_rig_vehicle_default(struct epb_rig_vehicle *v)
 
 /* ---- Physics ----------------------------------------------------------------------------- */
 
-static const double face_vec[CAL_FACES][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0},
-                                              {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+static const double face_vec[CAL_FACES][3] = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},
+                                              {0, -1, 0}, {0, 0, 1},  {0, 0, -1}};
 
 /* Pitch (deg) and pitch rate (deg/s) of one bump tau seconds after it began. */
 static void bump_pitch(const struct epb_rig_vehicle *v, const struct epb_rig_bump *b, double tau,
@@ -389,7 +389,8 @@ void epb_rig_park(struct epb_rig *r, const struct epb_rig_vehicle *v)
             r->phase[k][i] = 2.0 * PI * sim_rng_uniform(&r->rng);
         }
     }
-    r->next_bump_s = v->bump_rate_hz > 0.0 ? -log(1.0 - sim_rng_uniform(&r->rng)) / v->bump_rate_hz : 0.0;
+    r->next_bump_s = v->bump_rate_hz > 0.0 ? -log(1.0 - sim_rng_uniform(&r->rng)) / v->bump_rate_hz
+                                           : 0.0;
 }
 
 void epb_rig_wait(struct epb_rig *r, double seconds)

@@ -24,7 +24,8 @@ static uint32_t rng_next(struct simflash *f)
     return x;
 }
 
-int simflash_init(struct simflash *f, uint8_t *mem, size_t mem_size, const struct simflash_geometry *geo)
+int simflash_init(struct simflash *f, uint8_t *mem, size_t mem_size,
+                  const struct simflash_geometry *geo)
 {
     if (f == NULL || mem == NULL || geo == NULL) {
         return INC_ERR_NULL;
@@ -144,7 +145,8 @@ int simflash_program(struct simflash *f, uint32_t addr, const uint8_t *data, uin
         }
         if (step_is_cut(f)) {
             for (i = 0; i < unit; i++) {
-                uint8_t clear = (uint8_t)(cell[i] & (uint8_t)~src[i] & (uint8_t)~stuck_bits(f, addr + u + i));
+                uint8_t clear = (uint8_t)(cell[i] & (uint8_t)~src[i] &
+                                          (uint8_t)~stuck_bits(f, addr + u + i));
                 if (f->cut_mode == SIMFLASH_CUT_TORN) {
                     clear &= (uint8_t)rng_next(f);
                 } else if (f->cut_mode == SIMFLASH_CUT_BEFORE) {
@@ -195,10 +197,10 @@ int simflash_erase(struct simflash *f, uint32_t addr)
                     continue;
                 }
                 switch ((r >> 8) & 3u) {
-                case 0: break;                                                        /* untouched */
-                case 1: page[i] |= (uint8_t)((r >> 16) & (r >> 24)); break;           /* a few bits up */
-                case 2: page[i] = (uint8_t)(r >> 16); break;                          /* garbage */
-                default: page[i] |= (uint8_t)(r >> 16); break;                        /* half erased */
+                case 0: break;                                              /* untouched */
+                case 1: page[i] |= (uint8_t)((r >> 16) & (r >> 24)); break; /* a few bits up */
+                case 2: page[i] = (uint8_t)(r >> 16); break;                /* garbage */
+                default: page[i] |= (uint8_t)(r >> 16); break;              /* half erased */
                 }
             }
         }
@@ -236,7 +238,8 @@ uint32_t simflash_steps(const struct simflash *f)
     return f != NULL ? f->steps : 0u;
 }
 
-int simflash_cut_power_at(struct simflash *f, uint32_t n, enum simflash_cut_mode mode, uint32_t seed)
+int simflash_cut_power_at(struct simflash *f, uint32_t n, enum simflash_cut_mode mode,
+                          uint32_t seed)
 {
     if (f == NULL) {
         return INC_ERR_NULL;

@@ -4,7 +4,8 @@
 #include <cmath>
 #include <numeric>
 
-namespace inclino::ref {
+namespace inclino::ref
+{
 
 double dt_seconds(uint32_t ns)
 {
@@ -25,22 +26,21 @@ void KfRef::predict(const Eigen::MatrixXd &A, const Eigen::MatrixXd &B, const Ei
                     const Eigen::MatrixXd &Q)
 {
     if (B.cols() > 0) {
-        x = A * x + B * u;  // (1)
+        x = A * x + B * u; // (1)
     } else {
         x = A * x;
     }
-    P = A * P * A.transpose() + Q;  // (2)
+    P = A * P * A.transpose() + Q; // (2)
 }
 
 void KfRef::update_row(const Eigen::RowVectorXd &h, double r, double z)
 {
     const Eigen::VectorXd ph = P * h.transpose();
     const double s = h.dot(ph) + r;
-    const Eigen::VectorXd k = ph / s;                         // (4)
-    x += k * (z - h.dot(x));                                  // (3)
-    const Eigen::MatrixXd ikh =
-        Eigen::MatrixXd::Identity(P.rows(), P.cols()) - k * h;
-    P = ikh * P * ikh.transpose() + k * r * k.transpose();    // (5), Joseph form
+    const Eigen::VectorXd k = ph / s; // (4)
+    x += k * (z - h.dot(x));          // (3)
+    const Eigen::MatrixXd ikh = Eigen::MatrixXd::Identity(P.rows(), P.cols()) - k * h;
+    P = ikh * P * ikh.transpose() + k * r * k.transpose(); // (5), Joseph form
 }
 
 // ---- adaptive per-axis filter ----------------------------------------------------------------
@@ -50,7 +50,7 @@ AdaptParams AdaptParams::from_fixed(const kf_adapt_config &c)
     AdaptParams p;
     p.window = c.window;
     p.C = p_to_unit2(c.c);
-    p.D = static_cast<double>(c.d) / 4294967296.0;  // raw * 2^16 with Q16 raw: unit * 2^32
+    p.D = static_cast<double>(c.d) / 4294967296.0; // raw * 2^16 with Q16 raw: unit * 2^32
     p.A = p_to_unit2(c.a);
     p.B = q16(c.b);
     p.p0 = p_to_unit2(c.p0);
@@ -136,13 +136,15 @@ void TiltRef::start(int i, double angle)
     const double pb = s.P(1, 1);
     s.P = Eigen::Matrix2d::Zero();
     s.P(0, 0) = p_.axis[i].p0_angle;
-    s.P(1, 1) = pb;  // KF2 keeps the bias and its variance; the seed forms keep off
+    s.P(1, 1) = pb; // KF2 keeps the bias and its variance; the seed forms keep off
 }
 
 static double wrap180(double a)
 {
-    while (a > 180.0) a -= 360.0;
-    while (a <= -180.0) a += 360.0;
+    while (a > 180.0)
+        a -= 360.0;
+    while (a <= -180.0)
+        a += 360.0;
     return a;
 }
 
@@ -170,7 +172,8 @@ TiltOut TiltRef::step(const double accel[3], const double gyro[3], uint32_t in_f
             out.flags |= TILT_F_NOT_STARTED;
             return out;
         }
-        for (int i = 0; i < 2; i++) start(i, acc_angle[i]);
+        for (int i = 0; i < 2; i++)
+            start(i, acc_angle[i]);
         started_ = true;
     } else {
         const double cap = 2025.0;
@@ -207,7 +210,7 @@ TiltOut TiltRef::step(const double accel[3], const double gyro[3], uint32_t in_f
                     s.P = ikh * s.P * ikh.transpose() + k * c.r_angle * k.transpose();
                 }
             } else {
-                const double xp = s.x(0) + (gyro_ok ? (w - s.off) * dt : 0.0);  // w_theta(k)
+                const double xp = s.x(0) + (gyro_ok ? (w - s.off) * dt : 0.0); // w_theta(k)
                 double p = s.P(0, 0) + q00;
                 double x = xp;
                 if (acc_ok) {
@@ -238,4 +241,4 @@ TiltOut TiltRef::step(const double accel[3], const double gyro[3], uint32_t in_f
     return out;
 }
 
-}  // namespace inclino::ref
+} // namespace inclino::ref

@@ -23,7 +23,7 @@
 #include "inclino/error.h"
 
 #define GM_PER_DECADE 3.0
-#define GM_MAX_SPAN 1e5   /* 5 decades: 16 components at 3 per decade */
+#define GM_MAX_SPAN 1e5 /* 5 decades: 16 components at 3 per decade */
 #define NORM_POINTS 41
 
 /* Allan variance of a unit-variance first-order Gauss-Markov process at x = tau / tc. */

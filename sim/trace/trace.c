@@ -21,12 +21,13 @@ int trace_write_record(FILE *f, const struct trace_record *r)
     }
     if (r->kind == TRACE_IRQ) {
         return fprintf(f, "I t=%llu pin=%u\n", (unsigned long long)r->t_ns, r->pin) < 0 ? INC_ERR_IO
-                                                                                         : INC_OK;
+                                                                                        : INC_OK;
     }
     if (r->bits == 8u) {
         w = 2;
     }
-    if (fprintf(f, "F t=%llu cs=%u bits=%u mosi=", (unsigned long long)r->t_ns, r->pin, r->bits) < 0) {
+    if (fprintf(f, "F t=%llu cs=%u bits=%u mosi=", (unsigned long long)r->t_ns, r->pin, r->bits) <
+        0) {
         return INC_ERR_IO;
     }
     for (i = 0; i < r->n; i++) {
@@ -65,7 +66,8 @@ static const char *parse_num(const char *p, const char *key, unsigned long long 
     if (!is_blank(*p)) {
         return NULL;
     }
-    while (is_blank(*p)) p++;
+    while (is_blank(*p))
+        p++;
     if (strncmp(p, key, kl) != 0 || !isdigit((unsigned char)p[kl])) {
         return NULL;
     }
@@ -100,7 +102,8 @@ static const char *parse_words(const char *p, const char *key, unsigned bits, ui
     if (!is_blank(*p)) {
         return NULL;
     }
-    while (is_blank(*p)) p++;
+    while (is_blank(*p))
+        p++;
     if (strncmp(p, key, kl) != 0) {
         return NULL;
     }
@@ -129,7 +132,8 @@ static const char *parse_words(const char *p, const char *key, unsigned bits, ui
 
 static bool rest_is_blank(const char *p)
 {
-    while (*p == ' ' || *p == '\t' || *p == '\r' || *p == '\n') p++;
+    while (*p == ' ' || *p == '\t' || *p == '\r' || *p == '\n')
+        p++;
     return *p == '\0';
 }
 
@@ -156,7 +160,8 @@ int trace_parse_next(FILE *f, unsigned *line, struct trace_record *r, char *msg,
             }
             return INC_ERR_IO;
         }
-        while (is_blank(*p)) p++;
+        while (is_blank(*p))
+            p++;
         if (*p == '#' || rest_is_blank(p)) {
             continue;
         }
@@ -188,7 +193,8 @@ int trace_parse_next(FILE *f, unsigned *line, struct trace_record *r, char *msg,
             if (p == NULL) return fail_msg(msg, msg_len, *line, "bad mosi= words");
             p = parse_words(p, "miso=", r->bits, r->miso, &n2);
             if (p == NULL) return fail_msg(msg, msg_len, *line, "bad miso= words");
-            if (n2 != r->n) return fail_msg(msg, msg_len, *line, "mosi= and miso= differ in length");
+            if (n2 != r->n)
+                return fail_msg(msg, msg_len, *line, "mosi= and miso= differ in length");
         } else {
             return fail_msg(msg, msg_len, *line, "record must start with 'F ' or 'I '");
         }
@@ -325,7 +331,7 @@ static void r_crit_exit(void *c, uint32_t k)
     hal_crit_exit(rec->inner_hal, k);
 }
 
-static const struct hal_ops rec_hal_ops = {r_pin_write, r_pin_read,   r_now,        r_delay,
+static const struct hal_ops rec_hal_ops = {r_pin_write,  r_pin_read, r_now,        r_delay,
                                            r_irq_attach, r_irq_wait, r_crit_enter, r_crit_exit};
 
 int trace_rec_open(struct trace_rec *rec, const char *path, const struct spi_bus *inner,
@@ -346,8 +352,10 @@ int trace_rec_open(struct trace_rec *rec, const char *path, const struct spi_bus
     rec->bus.ctx = rec;
     rec->hal.ops = &rec_hal_ops;
     rec->hal.ctx = rec;
-    if (fprintf(rec->f, "%s\n# F t=<ns> cs=<pin> bits=<8|16> mosi=<hex,...> miso=<hex,...>"
-                        "  |  I t=<ns> pin=<pin>\n", TRACE_HEADER) < 0) {
+    if (fprintf(rec->f,
+                "%s\n# F t=<ns> cs=<pin> bits=<8|16> mosi=<hex,...> miso=<hex,...>"
+                "  |  I t=<ns> pin=<pin>\n",
+                TRACE_HEADER) < 0) {
         rec->io_error = true;
     }
     return INC_OK;
@@ -447,24 +455,27 @@ static int rp_transfer(void *ctx, struct spi_dev *dev, const uint16_t *tx, uint1
             return INC_ERR_MISMATCH;
         }
         if (!rp->have_next) {
-            set_error(rp, INC_ERR_MISMATCH, "frame %lu: the driver sent %04X but the trace has ended",
+            set_error(rp, INC_ERR_MISMATCH,
+                      "frame %lu: the driver sent %04X but the trace has ended",
                       (unsigned long)rp->frame, tx != NULL ? tx[done] : 0u);
             return INC_ERR_MISMATCH;
         }
         if (e->pin != dev->cfg.cs || e->bits != dev->cfg.bits || e->n != chunk) {
-            set_error(rp, INC_ERR_MISMATCH,
-                      "frame %lu (trace line %u): expected a CS period on cs=%u of %u %u-bit words, "
-                      "the driver made one on cs=%u of %lu %u-bit words",
-                      (unsigned long)rp->frame, e->line, e->pin, e->n, e->bits, (unsigned)dev->cfg.cs,
-                      (unsigned long)chunk, (unsigned)dev->cfg.bits);
+            set_error(
+                rp, INC_ERR_MISMATCH,
+                "frame %lu (trace line %u): expected a CS period on cs=%u of %u %u-bit words, "
+                "the driver made one on cs=%u of %lu %u-bit words",
+                (unsigned long)rp->frame, e->line, e->pin, e->n, e->bits, (unsigned)dev->cfg.cs,
+                (unsigned long)chunk, (unsigned)dev->cfg.bits);
             return INC_ERR_MISMATCH;
         }
         for (i = 0; i < chunk; i++) {
             const uint16_t got = tx != NULL ? tx[done + i] : 0u;
             if (got != e->mosi[i]) {
-                set_error(rp, INC_ERR_MISMATCH,
-                          "frame %lu (trace line %u, word %lu): expected MOSI %04X, driver sent %04X",
-                          (unsigned long)(rp->frame + i), e->line, (unsigned long)i, e->mosi[i], got);
+                set_error(
+                    rp, INC_ERR_MISMATCH,
+                    "frame %lu (trace line %u, word %lu): expected MOSI %04X, driver sent %04X",
+                    (unsigned long)(rp->frame + i), e->line, (unsigned long)i, e->mosi[i], got);
                 return INC_ERR_MISMATCH;
             }
         }
@@ -548,8 +559,10 @@ static bool fire_next_irq(struct trace_replay *rp)
             return true;
         }
     }
-    set_error(rp, INC_ERR_MISMATCH, "trace line %u: interrupt on pin %u, but the driver has no "
-              "callback attached there", rp->next.line, rp->next.pin);
+    set_error(rp, INC_ERR_MISMATCH,
+              "trace line %u: interrupt on pin %u, but the driver has no "
+              "callback attached there",
+              rp->next.line, rp->next.pin);
     return false;
 }
 
@@ -584,7 +597,7 @@ static void p_crit_exit(void *c, uint32_t k)
     rp->crit_depth = k;
 }
 
-static const struct hal_ops rp_hal_ops = {p_pin_write, p_pin_read,   p_now,        p_delay,
+static const struct hal_ops rp_hal_ops = {p_pin_write,  p_pin_read, p_now,        p_delay,
                                           p_irq_attach, p_irq_wait, p_crit_enter, p_crit_exit};
 
 int trace_replay_open(struct trace_replay *rp, const char *path)
@@ -625,7 +638,8 @@ int trace_replay_finish(struct trace_replay *rp)
         return INC_ERR_NULL;
     }
     if (rp->status == INC_OK && rp->have_next) {
-        set_error(rp, INC_ERR_MISMATCH, "frame %lu: the driver stopped, the trace goes on at line %u",
+        set_error(rp, INC_ERR_MISMATCH,
+                  "frame %lu: the driver stopped, the trace goes on at line %u",
                   (unsigned long)rp->frame, rp->next.line);
     }
     if (rp->f != NULL) {

@@ -47,16 +47,24 @@ static int parse_timescale(const char *s, unsigned long long *mul, unsigned long
     if (digits == 0 || isdigit((unsigned char)*s) || n == 0 || n > 1000u) {
         return -1;
     }
-    while (*s == ' ') s++;
+    while (*s == ' ')
+        s++;
     *mul = n;
     *div = 1;
-    if (strncmp(s, "fs", 2) == 0) *div = 1000000;
-    else if (strncmp(s, "ps", 2) == 0) *div = 1000;
-    else if (strncmp(s, "ns", 2) == 0) *div = 1;
-    else if (strncmp(s, "us", 2) == 0) *mul = n * 1000ull;
-    else if (strncmp(s, "ms", 2) == 0) *mul = n * 1000000ull;
-    else if (s[0] == 's') *mul = n * 1000000000ull;
-    else return -1;
+    if (strncmp(s, "fs", 2) == 0)
+        *div = 1000000;
+    else if (strncmp(s, "ps", 2) == 0)
+        *div = 1000;
+    else if (strncmp(s, "ns", 2) == 0)
+        *div = 1;
+    else if (strncmp(s, "us", 2) == 0)
+        *mul = n * 1000ull;
+    else if (strncmp(s, "ms", 2) == 0)
+        *mul = n * 1000000ull;
+    else if (s[0] == 's')
+        *mul = n * 1000000000ull;
+    else
+        return -1;
     return 0;
 }
 
@@ -75,7 +83,8 @@ static int parse_time(const char *p, unsigned long long mul, unsigned long long 
         }
         v = v * 10u + d;
     }
-    while (*p == ' ' || *p == '\t' || *p == '\r') p++;
+    while (*p == ' ' || *p == '\t' || *p == '\r')
+        p++;
     if (*p != '\0' || v > (UINT64_MAX - 1u) / mul) {
         return -1; /* UINT64_MAX itself is vfail's "no time" */
     }
@@ -121,13 +130,15 @@ int trace_from_vcd(FILE *vcd, FILE *out, const struct trace_vcd_opts *o, char *m
             lfail(msg, msg_len, lineno, "read error");
             return INC_ERR_IO;
         }
-        while (*p == ' ' || *p == '\t') p++;
+        while (*p == ' ' || *p == '\t')
+            p++;
         if (in_defs) {
             char id[VCD_ID_MAX], name[64];
             unsigned width;
             if (in_timescale || strncmp(p, "$timescale", 10) == 0) {
                 char *q = in_timescale ? p : p + 10;
-                while (*q == ' ') q++;
+                while (*q == ' ')
+                    q++;
                 if (*q != '\0' && *q != '\r' && strncmp(q, "$end", 4) != 0) {
                     if (parse_timescale(q, &mul, &div) != 0) {
                         return lfail(msg, msg_len, lineno, "unsupported $timescale");
@@ -149,7 +160,8 @@ int trace_from_vcd(FILE *vcd, FILE *out, const struct trace_vcd_opts *o, char *m
             } else if (strncmp(p, "$enddefinitions", 15) == 0) {
                 in_defs = 0;
                 if (!id_sclk[0] || !id_mosi[0] || !id_miso[0] || !id_cs[0]) {
-                    return vfail(msg, msg_len, "VCD: a wire named in the options is missing", UINT64_MAX);
+                    return vfail(msg, msg_len, "VCD: a wire named in the options is missing",
+                                 UINT64_MAX);
                 }
             }
             continue;
@@ -159,7 +171,8 @@ int trace_from_vcd(FILE *vcd, FILE *out, const struct trace_vcd_opts *o, char *m
              * capture: strtoull used to read "#abc" as 0 and "#-5" as a huge time. */
             unsigned long long nt;
             if (parse_time(p + 1, mul, div, &nt) != 0) {
-                return lfail(msg, msg_len, lineno, "bad timestamp (decimal digits within 64 bits expected)");
+                return lfail(msg, msg_len, lineno,
+                             "bad timestamp (decimal digits within 64 bits expected)");
             }
             if (nt < t) {
                 return lfail(msg, msg_len, lineno, "timestamp goes backwards");
@@ -167,7 +180,8 @@ int trace_from_vcd(FILE *vcd, FILE *out, const struct trace_vcd_opts *o, char *m
             t = nt;
             continue;
         }
-        if (p[0] == '0' || p[0] == '1' || p[0] == 'x' || p[0] == 'z' || p[0] == 'X' || p[0] == 'Z') {
+        if (p[0] == '0' || p[0] == '1' || p[0] == 'x' || p[0] == 'z' || p[0] == 'X' ||
+            p[0] == 'Z') {
             const int v = p[0] == '1';
             char *id = p + 1;
             id[strcspn(id, " \r\n")] = '\0';

@@ -93,7 +93,7 @@ static void f_exit(void *ctx, uint32_t key)
     f->crit_depth--;
 }
 
-static const struct hal_ops fake_ops = {f_pin_write, f_pin_read, f_now,  f_delay,
+static const struct hal_ops fake_ops = {f_pin_write, f_pin_read, f_now,   f_delay,
                                         f_attach,    f_wait,     f_enter, f_exit};
 
 static struct fake fk;
@@ -213,7 +213,7 @@ static void test_bad_args(void)
     CHECK_EQ_INT(pending, 0u);
     CHECK_EQ_INT(adis_dr_wait(&hal, NULL, 10, &pending), INC_ERR_NULL);
     CHECK_EQ_INT(adis_dr_wait(&hal, &dr, 10, NULL), INC_ERR_TIMEOUT); /* pending may be NULL */
-    adis_dr_isr(NULL);                                               /* no effect, no crash */
+    adis_dr_isr(NULL);                                                /* no effect, no crash */
     adis_dr_sync(NULL, &dr);
     adis_dr_sync(&hal, NULL);
     adis_dr_reset(NULL);

@@ -28,7 +28,8 @@ static void rf_write(void *m, uint8_t addr, uint8_t v, uint64_t t)
     struct regfile *r = m;
     uint16_t *w = &r->reg[(addr & 0x7Fu) >> 1];
     (void)t;
-    *w = (addr & 1u) ? (uint16_t)((*w & 0x00FFu) | (uint16_t)v << 8) : (uint16_t)((*w & 0xFF00u) | v);
+    *w = (addr & 1u) ? (uint16_t)((*w & 0x00FFu) | (uint16_t)v << 8)
+                     : (uint16_t)((*w & 0xFF00u) | v);
 }
 
 static bool rf_busy(void *m, uint64_t t)
@@ -55,7 +56,7 @@ static struct sim_adis_core core;
 static struct regfile rf;
 static struct spi_dev dev;
 
-static const struct spi_timing normal = {500, 100, 100, 9000, 0};   /* 2 MHz, 9 us stall */
+static const struct spi_timing normal = {500, 100, 100, 9000, 0};    /* 2 MHz, 9 us stall */
 static const struct spi_timing burst = {1000, 100, 100, 9000, 1000}; /* 1 MHz */
 
 static void setup(void)

@@ -35,13 +35,13 @@ void fx_input(double rate_dps, double temp_c, double supply_v);
 void fx_wait_ms(uint32_t ms);
 
 /* Every normal test ends with this: a driver that broke a timing rule shows the log. */
-#define CHECK_NO_VIOLATIONS()                                                  \
-    do {                                                                       \
-        if (fx.board.log.total != 0u) {                                        \
-            printf("violation log:\n");                                        \
-            sim_violation_log_print(&fx.board.log, stdout);                    \
-        }                                                                      \
-        CHECK_EQ_INT(fx.board.log.total, 0);                                   \
+#define CHECK_NO_VIOLATIONS()                               \
+    do {                                                    \
+        if (fx.board.log.total != 0u) {                     \
+            printf("violation log:\n");                     \
+            sim_violation_log_print(&fx.board.log, stdout); \
+        }                                                   \
+        CHECK_EQ_INT(fx.board.log.total, 0);                \
     } while (0)
 
 #endif /* TESTS_ADIS16255_FIXTURE_H */

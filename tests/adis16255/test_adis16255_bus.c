@@ -118,7 +118,8 @@ static void test_bus_efficiency(void)
 
     /* Integer formatting: newlib-nano's printf (QEMU) has no %f. */
     printf("ADIS16255 bus time, one sample set (GYRO_OUT + TEMP_OUT), simulated ns\n");
-    printf("| method | frames | bus time | minimum, 3 frames | ratio | minimum, same frames | ratio |\n");
+    printf(
+        "| method | frames | bus time | minimum, 3 frames | ratio | minimum, same frames | ratio |\n");
     printf("| separate 2-frame reads | 4 | %lu | %lu | %s | %lu | %s |\n", (unsigned long)sep,
            (unsigned long)min3, ratio(sep, min3, r1), (unsigned long)min4, ratio(sep, min4, r2));
     printf("| pipelined (read_sample) | 3 | %lu | %lu | %s | %lu | %s |\n", (unsigned long)pip,

@@ -19,20 +19,24 @@ static void test_gyro(void)
 {
     int32_t q = 0;
     /* (word, range, Q16.16 °/s): n * range * 5/273 °/s. */
-    static const struct { uint16_t w; enum adis16255_range r; int32_t q; } v[] = {
-        {0x0555, ADIS16255_RANGE_320, 6553600},     /* 1365 -> 100 °/s exactly */
-        {0x3556, ADIS16255_RANGE_320, -13107200},   /* -2730 -> -200 °/s */
-        {0x0001, ADIS16255_RANGE_320, 4801},        /* 0.0732600 °/s */
+    static const struct {
+        uint16_t w;
+        enum adis16255_range r;
+        int32_t q;
+    } v[] = {
+        {0x0555, ADIS16255_RANGE_320, 6553600},   /* 1365 -> 100 °/s exactly */
+        {0x3556, ADIS16255_RANGE_320, -13107200}, /* -2730 -> -200 °/s */
+        {0x0001, ADIS16255_RANGE_320, 4801},      /* 0.0732600 °/s */
         {0x3FFF, ADIS16255_RANGE_320, -4801},
-        {0x1FFF, ADIS16255_RANGE_320, 39326401},    /* +8191: 600.07 °/s */
-        {0x2000, ADIS16255_RANGE_320, -39331202},   /* -8192 */
-        {0x1110, ADIS16255_RANGE_320, 20971520},    /* 4368 -> 320 °/s */
-        {0x0AAA, ADIS16255_RANGE_80, 3276800},      /* 2730 at ±80 -> 50 °/s */
+        {0x1FFF, ADIS16255_RANGE_320, 39326401},  /* +8191: 600.07 °/s */
+        {0x2000, ADIS16255_RANGE_320, -39331202}, /* -8192 */
+        {0x1110, ADIS16255_RANGE_320, 20971520},  /* 4368 -> 320 °/s */
+        {0x0AAA, ADIS16255_RANGE_80, 3276800},    /* 2730 at ±80 -> 50 °/s */
         {0x0001, ADIS16255_RANGE_80, 1200},
         {0x0001, ADIS16255_RANGE_160, 2401},
         {0x2000, ADIS16255_RANGE_80, -9832801},
         {0x0000, ADIS16255_RANGE_320, 0},
-        {0xC555, ADIS16255_RANGE_320, 6553600},     /* ND and EA are not data */
+        {0xC555, ADIS16255_RANGE_320, 6553600}, /* ND and EA are not data */
     };
     unsigned i;
     long n;
@@ -64,22 +68,22 @@ static void test_temp_supply_angle(void)
 {
     long n;
     double worst = 0.0;
-    CHECK_EQ_INT(adis16255_temp_c_q16(0x0000), 1638400);      /* 25 °C */
-    CHECK_EQ_INT(adis16255_temp_c_q16(0x0001), 1647922);      /* 25.1453 */
-    CHECK_EQ_INT(adis16255_temp_c_q16(0x0FFF), 1628878);      /* -1 */
-    CHECK_EQ_INT(adis16255_temp_c_q16(0x0067), 2619205);      /* 103 -> 39.9659 °C */
-    CHECK_EQ_INT(adis16255_temp_c_q16(0x07FF), 21130713);     /* +2047 */
-    CHECK_EQ_INT(adis16255_temp_c_q16(0x0800), -17863436);    /* -2048 */
-    CHECK_EQ_INT(adis16255_temp_c_q16(0xFF0F), -656494);      /* -241, D13:D12/ND/EA ignored */
+    CHECK_EQ_INT(adis16255_temp_c_q16(0x0000), 1638400);   /* 25 °C */
+    CHECK_EQ_INT(adis16255_temp_c_q16(0x0001), 1647922);   /* 25.1453 */
+    CHECK_EQ_INT(adis16255_temp_c_q16(0x0FFF), 1628878);   /* -1 */
+    CHECK_EQ_INT(adis16255_temp_c_q16(0x0067), 2619205);   /* 103 -> 39.9659 °C */
+    CHECK_EQ_INT(adis16255_temp_c_q16(0x07FF), 21130713);  /* +2047 */
+    CHECK_EQ_INT(adis16255_temp_c_q16(0x0800), -17863436); /* -2048 */
+    CHECK_EQ_INT(adis16255_temp_c_q16(0xFF0F), -656494);   /* -241, D13:D12/ND/EA ignored */
     CHECK_EQ_INT(adis16255_supply_v_q16(0x0000), 0);
     CHECK_EQ_INT(adis16255_supply_v_q16(0x0001), 120);
-    CHECK_EQ_INT(adis16255_supply_v_q16(0x0AAA), 327680);     /* 2730 -> 5.0000 V */
-    CHECK_EQ_INT(adis16255_supply_v_q16(0x0FFF), 491520);     /* 4095 -> 7.5000 V */
-    CHECK_EQ_INT(adis16255_supply_v_q16(0x89D0), 301513);     /* 2512 -> 4.6007 V, ND set */
+    CHECK_EQ_INT(adis16255_supply_v_q16(0x0AAA), 327680); /* 2730 -> 5.0000 V */
+    CHECK_EQ_INT(adis16255_supply_v_q16(0x0FFF), 491520); /* 4095 -> 7.5000 V */
+    CHECK_EQ_INT(adis16255_supply_v_q16(0x89D0), 301513); /* 2512 -> 4.6007 V, ND set */
     CHECK_EQ_INT(adis16255_angle_deg_q16(0x0000), 0);
     CHECK_EQ_INT(adis16255_angle_deg_q16(0x0001), 2401);
-    CHECK_EQ_INT(adis16255_angle_deg_q16(0x0110), 652959);    /* 272 -> 9.9634 ° */
-    CHECK_EQ_INT(adis16255_angle_deg_q16(0xBFFF), 39328802);  /* 16383 */
+    CHECK_EQ_INT(adis16255_angle_deg_q16(0x0110), 652959);   /* 272 -> 9.9634 ° */
+    CHECK_EQ_INT(adis16255_angle_deg_q16(0xBFFF), 39328802); /* 16383 */
     for (n = -2048; n <= 2047; n++) {
         double e = (double)adis16255_temp_c_q16((uint16_t)((unsigned long)n & 0xFFFu)) -
                    (25.0 * 65536.0 + exact_q16(n, 1453.0, 10000.0));
@@ -101,21 +105,21 @@ static void test_temp_supply_angle(void)
 
 static void test_gyro_off(void)
 {
-    static const struct { int32_t q; uint16_t w; bool sat; } v[] = {
-        {0, 0x000, false},
-        {65536, 0x037, false},        /* 1 °/s -> 54.6 -> 55 */
-        {-65536, 0xFC9, false},       /* -55 */
-        {131072, 0x06D, false},       /* 2 °/s -> 109.2 -> 109 */
-        {163840, 0x089, false},       /* 2.5 °/s -> 136.5: tie, away from zero -> 137 */
-        {-163840, 0xF77, false},      /* -137 */
-        {600, 0x000, false},
-        {1200, 0x001, false},
-        {-1200, 0xFFF, false},
-        {37 * 65536, 0x7E4, false},   /* 2020 */
-        {38 * 65536, 0x7FF, true},    /* 2075 -> 2047 */
-        {-38 * 65536, 0x800, true},   /* -2048 */
-        {INT32_MAX, 0x7FF, true},
-        {INT32_MIN, 0x800, true},
+    static const struct {
+        int32_t q;
+        uint16_t w;
+        bool sat;
+    } v[] = {
+        {0, 0x000, false},          {65536, 0x037, false}, /* 1 °/s -> 54.6 -> 55 */
+        {-65536, 0xFC9, false},                            /* -55 */
+        {131072, 0x06D, false},                            /* 2 °/s -> 109.2 -> 109 */
+        {163840, 0x089, false},  /* 2.5 °/s -> 136.5: tie, away from zero -> 137 */
+        {-163840, 0xF77, false}, /* -137 */
+        {600, 0x000, false},        {1200, 0x001, false},
+        {-1200, 0xFFF, false},      {37 * 65536, 0x7E4, false}, /* 2020 */
+        {38 * 65536, 0x7FF, true},                              /* 2075 -> 2047 */
+        {-38 * 65536, 0x800, true},                             /* -2048 */
+        {INT32_MAX, 0x7FF, true},   {INT32_MIN, 0x800, true},
     };
     unsigned i;
     uint16_t w;
@@ -153,9 +157,9 @@ static void test_gyro_off(void)
 
 static void test_rate_and_sclk(void)
 {
-    CHECK_EQ_INT(adis16255_sample_period_us(0x00), 1953);       /* 512 SPS */
-    CHECK_EQ_INT(adis16255_sample_period_us(0x01), 3906);       /* 256 SPS default */
-    CHECK_EQ_INT(adis16255_sample_period_us(0x07), 15624);      /* 64 SPS (A4's example) */
+    CHECK_EQ_INT(adis16255_sample_period_us(0x00), 1953);  /* 512 SPS */
+    CHECK_EQ_INT(adis16255_sample_period_us(0x01), 3906);  /* 256 SPS default */
+    CHECK_EQ_INT(adis16255_sample_period_us(0x07), 15624); /* 64 SPS (A4's example) */
     CHECK_EQ_INT(adis16255_sample_period_us(0x08), 17577);
     CHECK_EQ_INT(adis16255_sample_period_us(0x7F), 249984);
     CHECK_EQ_INT(adis16255_sample_period_us(0x80), 60540);

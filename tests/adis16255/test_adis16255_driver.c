@@ -58,7 +58,7 @@ static void test_init(void)
     CHECK_EQ_HEX(sim_adis16255_peek(&fx.part, ADIS16255_REG_SMPL_PRD), 0x0082);
     CHECK_EQ_HEX(sim_adis16255_peek(&fx.part, ADIS16255_REG_SENS_AVG), 0x0104);
     CHECK_EQ_HEX(sim_adis16255_peek(&fx.part, ADIS16255_REG_MSC_CTRL), 0x0005);
-    CHECK_EQ_INT(fx.part.commands, 1); /* the reset */
+    CHECK_EQ_INT(fx.part.commands, 1);                      /* the reset */
     CHECK(sim_pinbus_read(&fx.board.bus, SIM_BOARD_DR(1))); /* idle high */
     CHECK_EQ_INT(adis16255_dr_timeout_us(&fx.drv), 2u * 181620u + ADIS16255_DR_MARGIN_US);
     CHECK_NO_VIOLATIONS();
@@ -539,7 +539,11 @@ static void test_no_device_init(void)
 
 static void test_implausible_part(void)
 {
-    static const struct { uint8_t addr; uint16_t value; enum adis16255_id_check why; } v[] = {
+    static const struct {
+        uint8_t addr;
+        uint16_t value;
+        enum adis16255_id_check why;
+    } v[] = {
         {ADIS16255_REG_GYRO_SCALE, 0xF800, ADIS16255_ID_RESERVED_BITS},
         {ADIS16255_REG_SMPL_PRD, 0x0101, ADIS16255_ID_RESERVED_BITS},
         {ADIS16255_REG_MSC_CTRL, 0x0016, ADIS16255_ID_RESERVED_BITS},

@@ -44,8 +44,8 @@ static void put(struct results *r, int err, int32_t val)
  * in which C evaluates arguments is unspecified). */
 
 /* Init (reset + self-test), three data-ready samples, a stale read, supply, angle. */
-static void seq_init_read(const struct spi_bus *bus, const struct hal *hal, enum adis16255_range range,
-                          struct results *r)
+static void seq_init_read(const struct spi_bus *bus, const struct hal *hal,
+                          enum adis16255_range range, struct results *r)
 {
     struct adis16255_cfg cfg;
     struct adis16255_sample s;
@@ -191,9 +191,9 @@ static void test_commands(void)
     for (i = 0; i < 10u; i++) {
         CHECK_EQ_INT(live.err[i], 0);
     }
-    CHECK_EQ_INT(live.val[2], adis16255_gyro_off_dps_q16(0xF93));  /* -109: the 2 °/s bias */
-    CHECK_EQ_INT(live.val[8], adis16255_gyro_off_dps_q16(0xF93));  /* from flash after reset */
-    CHECK_EQ_INT(live.val[9], 0);                                  /* bias nulled */
+    CHECK_EQ_INT(live.val[2], adis16255_gyro_off_dps_q16(0xF93)); /* -109: the 2 °/s bias */
+    CHECK_EQ_INT(live.val[8], adis16255_gyro_off_dps_q16(0xF93)); /* from flash after reset */
+    CHECK_EQ_INT(live.val[9], 0);                                 /* bias nulled */
     REQUIRE(trace_replay_open(&rp, COMMANDS) == 0);
     seq_commands(&rp.bus, &rp.hal, &replay);
     CHECK_OK(trace_replay_finish(&rp));

@@ -65,6 +65,7 @@ void fx_set_input_settled(const struct sim_inertial_input *in)
 {
     sim_adis_imu_set_input(&fx.part, in);
     /* 128 samples at the current rate: every Bartlett setting (2N - 1 <= 127) has settled. */
-    hal_delay_until(&fx.board.hal,
-                    fx.board.clk.now_ns + (uint64_t)(128.0 * 1e9 / sim_adis_imu_rate_sps(&fx.part)) + 1u);
+    hal_delay_until(&fx.board.hal, fx.board.clk.now_ns +
+                                       (uint64_t)(128.0 * 1e9 / sim_adis_imu_rate_sps(&fx.part)) +
+                                       1u);
 }

@@ -19,10 +19,10 @@
 
 struct bias_model {
     double bias[3];
-    double noise_dps;           /* white noise rms per sample (0: none) */
+    double noise_dps; /* white noise rms per sample (0: none) */
     struct sim_rng rng;
     const struct sim_adis_imu *part;
-    double prec_sum[3];         /* rates the part saw while precision autonull ran */
+    double prec_sum[3]; /* rates the part saw while precision autonull ran */
     uint32_t prec_n;
     uint32_t calls;
 };
@@ -54,8 +54,7 @@ static void bias_apply(void *ctx, const struct sim_inertial_input *in,
 
 static const struct sim_error_model bias_hook = {bias_apply, &bm};
 
-static void setup_biased(enum sim_adis_imu_variant v, double bx, double by, double bz,
-                         double noise)
+static void setup_biased(enum sim_adis_imu_variant v, double bx, double by, double bz, double noise)
 {
     memset(&bm, 0, sizeof(bm));
     bm.bias[0] = bx;
@@ -84,9 +83,9 @@ static void test_error_model_hook(void)
     CHECK_OK(adis_imu_dr_flush(&fx.imu));
     CHECK_OK(adis_imu_wait_dr(&fx.imu, 0, NULL));
     CHECK_OK(adis_imu_read_burst(&fx.imu, &s));
-    CHECK_EQ_INT(s.counts[ADIS_IMU_CH_GYRO_X], 14);   /* 0.7 / 0.05 */
-    CHECK_EQ_INT(s.counts[ADIS_IMU_CH_GYRO_Y], -25);  /* -1.23 / 0.05 = -24.6 */
-    CHECK_EQ_INT(s.counts[ADIS_IMU_CH_GYRO_Z], 1);    /* 0.62 */
+    CHECK_EQ_INT(s.counts[ADIS_IMU_CH_GYRO_X], 14);  /* 0.7 / 0.05 */
+    CHECK_EQ_INT(s.counts[ADIS_IMU_CH_GYRO_Y], -25); /* -1.23 / 0.05 = -24.6 */
+    CHECK_EQ_INT(s.counts[ADIS_IMU_CH_GYRO_Z], 1);   /* 0.62 */
     CHECK(bm.calls > 300u);
     CHECK_EQ_INT(fx_violations(), 0);
 }

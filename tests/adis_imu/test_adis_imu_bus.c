@@ -18,7 +18,7 @@
 
 #include <stdio.h>
 
-#define REQ_CS_NS 49u          /* model: CS setup = CS hold = 49 ns (tCS ~48.8 ns [U]) */
+#define REQ_CS_NS 49u /* model: CS setup = CS hold = 49 ns (tCS ~48.8 ns [U]) */
 
 struct cs_watch {
     struct sim_pin_listener l;
@@ -74,8 +74,8 @@ static uint64_t engine_burst_ns(unsigned words, uint32_t p, uint32_t gap)
 {
     const uint32_t h2 = p - p / 2u;
     const uint32_t g = gap > h2 ? gap : h2;
-    return ADIS_IMU_CS_SETUP_NS + (uint64_t)words * 16u * p - h2 + (words - 1u) * (uint64_t)(g - h2) +
-           ADIS_IMU_CS_HOLD_NS;
+    return ADIS_IMU_CS_SETUP_NS + (uint64_t)words * 16u * p - h2 +
+           (words - 1u) * (uint64_t)(g - h2) + ADIS_IMU_CS_HOLD_NS;
 }
 
 static uint64_t engine_toggled_ns(unsigned frames, uint32_t p, uint32_t stall)
@@ -106,12 +106,15 @@ static void bench_part(enum sim_adis_imu_variant v, const char *name, bool low_p
     const struct adis_imu_variant_info *vi;
     struct adis_imu_sample s;
     const uint16_t set = ADIS_IMU_CH_GYROS | ADIS_IMU_CH_ACCELS | ADIS_IMU_CH_TEMPS;
-    const uint32_t p_reg = low_power ? ADIS_IMU_SCLK_PERIOD_LOW_POWER_NS : ADIS_IMU_SCLK_PERIOD_NORMAL_NS;
-    const uint32_t p_burst = low_power ? ADIS_IMU_SCLK_PERIOD_LOW_POWER_NS : ADIS_IMU_SCLK_PERIOD_BURST_NS;
+    const uint32_t p_reg = low_power ? ADIS_IMU_SCLK_PERIOD_LOW_POWER_NS
+                                     : ADIS_IMU_SCLK_PERIOD_NORMAL_NS;
+    const uint32_t p_burst = low_power ? ADIS_IMU_SCLK_PERIOD_LOW_POWER_NS
+                                       : ADIS_IMU_SCLK_PERIOD_BURST_NS;
     const uint32_t min_p_reg = low_power ? 3333u : 500u;
     const uint32_t min_p_burst = low_power ? 3333u : 1000u;
     const uint32_t drv_stall = low_power ? ADIS_IMU_STALL_LOW_POWER_NS : ADIS_IMU_STALL_NORMAL_NS;
-    const uint32_t req_stall = low_power ? SIM_ADIS_IMU_STALL_LOW_POWER_NS : SIM_ADIS_IMU_STALL_NORMAL_NS;
+    const uint32_t req_stall = low_power ? SIM_ADIS_IMU_STALL_LOW_POWER_NS
+                                         : SIM_ADIS_IMU_STALL_NORMAL_NS;
     char label[64];
     uint64_t t, m;
     unsigned regs;
@@ -129,8 +132,9 @@ static void bench_part(enum sim_adis_imu_variant v, const char *name, bool low_p
     CHECK_OK(adis_imu_read_burst(&fx.imu, &s));
     t = watch_ns();
     CHECK_EQ_INT(w.periods, 1);
-    CHECK_EQ_INT(t, engine_burst_ns(vi->burst_words + 1u, p_burst,
-                                    p_burst > ADIS_IMU_BURST_GAP_NS ? p_burst : ADIS_IMU_BURST_GAP_NS));
+    CHECK_EQ_INT(
+        t, engine_burst_ns(vi->burst_words + 1u, p_burst,
+                           p_burst > ADIS_IMU_BURST_GAP_NS ? p_burst : ADIS_IMU_BURST_GAP_NS));
     m = min_burst_ns(vi->burst_words + 1u, min_p_burst);
     CHECK((double)t <= 1.10 * (double)m); /* the goal */
     row(label, "burst, 1 CS period", vi->burst_words + 1u, t, m);

@@ -58,11 +58,11 @@ static void test_gyro_exhaustive(void)
     CHECK_EQ_INT(adis_imu_gyro_dps_q16(6000, ADIS_IMU_RANGE_300), 300 * 65536);
     CHECK_EQ_INT(adis_imu_gyro_dps_q16(-6000, ADIS_IMU_RANGE_300), -300 * 65536);
     CHECK_EQ_INT(adis_imu_gyro_dps_q16(6000, ADIS_IMU_RANGE_75), 75 * 65536);
-    CHECK_EQ_INT(adis_imu_gyro_dps_q16(-1, ADIS_IMU_RANGE_300), -3277);  /* -3276.8 */
-    CHECK_EQ_INT(adis_imu_gyro_dps_q16(1, ADIS_IMU_RANGE_150), 1638);    /* 1638.4 */
-    CHECK_EQ_INT(adis_imu_gyro_dps_q16(1, ADIS_IMU_RANGE_75), 819);      /* 819.2 */
+    CHECK_EQ_INT(adis_imu_gyro_dps_q16(-1, ADIS_IMU_RANGE_300), -3277);        /* -3276.8 */
+    CHECK_EQ_INT(adis_imu_gyro_dps_q16(1, ADIS_IMU_RANGE_150), 1638);          /* 1638.4 */
+    CHECK_EQ_INT(adis_imu_gyro_dps_q16(1, ADIS_IMU_RANGE_75), 819);            /* 819.2 */
     CHECK_EQ_INT(adis_imu_gyro_dps_q16(-8192, ADIS_IMU_RANGE_300), -26843546); /* -409.6 */
-    CHECK_EQ_INT(adis_imu_gyro_dps_q16(5, ADIS_IMU_RANGE_300), 16384);  /* 0.25 exactly */
+    CHECK_EQ_INT(adis_imu_gyro_dps_q16(5, ADIS_IMU_RANGE_300), 16384);         /* 0.25 exactly */
     CHECK_EQ_INT(adis_imu_gyro_dps_q16(100, (enum adis_imu_range)3), 0);
     /* Out-of-range input is clamped, never overflows. */
     CHECK_EQ_INT(adis_imu_gyro_dps_q16(INT32_MAX, ADIS_IMU_RANGE_75), 65535 * 819 + 13107);
@@ -81,8 +81,10 @@ static void test_other_channels_exhaustive(void)
         }
     }
     for (c = -2048; c <= 2047; c++) {
-        expect_round(adis_imu_temp_c_q16(c, ADIS_IMU_FAMILY_1636X), (25000 + (int64_t)c * 136) * 65536, 1000);
-        expect_round(adis_imu_temp_c_q16(c, ADIS_IMU_FAMILY_1640X), (25000 + (int64_t)c * 140) * 65536, 1000);
+        expect_round(adis_imu_temp_c_q16(c, ADIS_IMU_FAMILY_1636X),
+                     (25000 + (int64_t)c * 136) * 65536, 1000);
+        expect_round(adis_imu_temp_c_q16(c, ADIS_IMU_FAMILY_1640X),
+                     (25000 + (int64_t)c * 140) * 65536, 1000);
     }
     for (c = 0; c <= 16383; c++) {
         expect_round(adis_imu_supply_v_q16(c), (int64_t)c * 2418 * 65536, 1000000);
@@ -95,18 +97,18 @@ static void test_other_channels_exhaustive(void)
     }
     CHECK_EQ_INT(bad, 0);
     /* vectors */
-    CHECK_EQ_INT(adis_imu_accel_g_q16(300, 3333), 65529);     /* 0.9999 g = 65529.4 */
-    CHECK_EQ_INT(adis_imu_accel_g_q16(1000, 1000), 65536);    /* 1 g exactly */
-    CHECK_EQ_INT(adis_imu_accel_g_q16(-1, 333), -22);         /* -21.82 */
+    CHECK_EQ_INT(adis_imu_accel_g_q16(300, 3333), 65529);  /* 0.9999 g = 65529.4 */
+    CHECK_EQ_INT(adis_imu_accel_g_q16(1000, 1000), 65536); /* 1 g exactly */
+    CHECK_EQ_INT(adis_imu_accel_g_q16(-1, 333), -22);      /* -21.82 */
     CHECK_EQ_INT(adis_imu_accel_g_q16(1, 0), 0);
     CHECK_EQ_INT(adis_imu_temp_c_q16(0, ADIS_IMU_FAMILY_1636X), 25 * 65536);
     CHECK_EQ_INT(adis_imu_temp_c_q16(-2048, ADIS_IMU_FAMILY_1636X), -16615211); /* -253.528 C */
     CHECK_EQ_INT(adis_imu_temp_c_q16(100, ADIS_IMU_FAMILY_1640X), 39 * 65536);  /* 25 + 14 */
-    CHECK_EQ_INT(adis_imu_supply_v_q16(0x814), 327708);       /* 5.000424 V */
-    CHECK_EQ_INT(adis_imu_supply_v_q16(1964), 311227);        /* 4.748952 V = 311227.3 */
-    CHECK_EQ_INT(adis_imu_magn_gauss_q16(2000), 65536);       /* 1 gauss */
-    CHECK_EQ_INT(adis_imu_magn_gauss_q16(-1), -33);           /* -32.768 */
-    CHECK_EQ_INT(adis_imu_aux_v_q16(4095), 216252);           /* 3.299751 V = 216252.48 */
+    CHECK_EQ_INT(adis_imu_supply_v_q16(0x814), 327708);                         /* 5.000424 V */
+    CHECK_EQ_INT(adis_imu_supply_v_q16(1964), 311227);  /* 4.748952 V = 311227.3 */
+    CHECK_EQ_INT(adis_imu_magn_gauss_q16(2000), 65536); /* 1 gauss */
+    CHECK_EQ_INT(adis_imu_magn_gauss_q16(-1), -33);     /* -32.768 */
+    CHECK_EQ_INT(adis_imu_aux_v_q16(4095), 216252);     /* 3.299751 V = 216252.48 */
 }
 
 static void test_gyro_offsets(void)
@@ -138,21 +140,21 @@ static void test_gyro_offsets(void)
         }
     }
     CHECK_EQ_INT(bad, 0);
-    CHECK_EQ_INT(adis_imu_gyro_off_from_dps_q16(65536, &sat), 80);     /* 1 deg/s x 80 */
+    CHECK_EQ_INT(adis_imu_gyro_off_from_dps_q16(65536, &sat), 80); /* 1 deg/s x 80 */
     CHECK(!sat);
-    CHECK_EQ_INT(adis_imu_gyro_off_from_dps_q16(2048, NULL), 3);       /* 2.5 -> 3 (tie) */
-    CHECK_EQ_INT(adis_imu_gyro_off_from_dps_q16(-2048, NULL), -3);     /* -2.5 -> -3 */
+    CHECK_EQ_INT(adis_imu_gyro_off_from_dps_q16(2048, NULL), 3);   /* 2.5 -> 3 (tie) */
+    CHECK_EQ_INT(adis_imu_gyro_off_from_dps_q16(-2048, NULL), -3); /* -2.5 -> -3 */
     CHECK_EQ_INT(adis_imu_gyro_off_from_dps_q16(2047, NULL), 2);
     CHECK_EQ_INT(adis_imu_gyro_off_from_dps_q16(-3355443, &sat), -4096); /* -51.2 deg/s */
     CHECK(!sat);
-    CHECK_EQ_INT(adis_imu_gyro_off_from_dps_q16(3355443, &sat), 4095);   /* +51.2: clipped */
+    CHECK_EQ_INT(adis_imu_gyro_off_from_dps_q16(3355443, &sat), 4095); /* +51.2: clipped */
     CHECK(sat);
     CHECK_EQ_INT(adis_imu_gyro_off_from_dps_q16(INT32_MAX, &sat), 4095);
     CHECK(sat);
     CHECK_EQ_INT(adis_imu_gyro_off_from_dps_q16(INT32_MIN, &sat), -4096);
     CHECK(sat);
     CHECK_EQ_INT(adis_imu_gyro_off_to_dps_q16(80), 65536);
-    CHECK_EQ_INT(adis_imu_gyro_off_to_dps_q16(-1), -819);              /* -0.0125 = -819.2 */
+    CHECK_EQ_INT(adis_imu_gyro_off_to_dps_q16(-1), -819);               /* -0.0125 = -819.2 */
     CHECK_EQ_INT(adis_imu_gyro_off_to_dps_q16(9999), 4095 * 8192 / 10); /* saturated first */
 }
 
@@ -163,7 +165,9 @@ static void test_accel_offsets(void)
     bad = 0;
     for (c = -2048; c <= 2047; c++) {
         expect_round(adis_imu_accel_off_to_g_q16(c, 3333), (int64_t)c * 3333 * 65536, 1000000);
-        expect_round(adis_imu_accel_off_from_g_q16(adis_imu_accel_off_to_g_q16(c, 333), 333, &sat) - c, 0, 1);
+        expect_round(adis_imu_accel_off_from_g_q16(adis_imu_accel_off_to_g_q16(c, 333), 333, &sat) -
+                         c,
+                     0, 1);
         if (sat && bad++ < 5u) {
             CHECK(!sat);
         }
@@ -184,14 +188,14 @@ static void test_accel_offsets(void)
 
 static void test_sample_rate(void)
 {
-    CHECK_EQ_INT(adis_imu_sample_period_ns(0x01), 1220703);   /* 819.2 SPS */
-    CHECK_EQ_INT(adis_imu_sample_period_ns(0x00), 610352);    /* 1638.4 SPS */
-    CHECK_EQ_INT(adis_imu_sample_period_ns(0x09), 6103516);   /* 163.84 SPS */
-    CHECK_EQ_INT(adis_imu_sample_period_ns(0x7F), 78125000);  /* 128 x tB */
+    CHECK_EQ_INT(adis_imu_sample_period_ns(0x01), 1220703);     /* 819.2 SPS */
+    CHECK_EQ_INT(adis_imu_sample_period_ns(0x00), 610352);      /* 1638.4 SPS */
+    CHECK_EQ_INT(adis_imu_sample_period_ns(0x09), 6103516);     /* 163.84 SPS */
+    CHECK_EQ_INT(adis_imu_sample_period_ns(0x7F), 78125000);    /* 128 x tB */
     CHECK_EQ_INT(adis_imu_sample_period_ns(0xFF), 2421875000u); /* 128 x 31 x tB */
     CHECK_EQ_INT(adis_imu_sample_rate_msps(0x01), 819200);
-    CHECK_EQ_INT(adis_imu_sample_rate_msps(0x0A), 148945);    /* 148.945 SPS */
-    CHECK_EQ_INT(adis_imu_sample_rate_msps(0x80), 52852);     /* 1638.4/31 = 52.8516 */
+    CHECK_EQ_INT(adis_imu_sample_rate_msps(0x0A), 148945); /* 148.945 SPS */
+    CHECK_EQ_INT(adis_imu_sample_rate_msps(0x80), 52852);  /* 1638.4/31 = 52.8516 */
     CHECK(!adis_imu_smpl_prd_is_low_power(0x09));
     CHECK(adis_imu_smpl_prd_is_low_power(0x0A));
     CHECK(adis_imu_smpl_prd_is_low_power(0x81));

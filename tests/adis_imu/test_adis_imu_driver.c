@@ -30,10 +30,7 @@ static void input1(struct sim_inertial_input *in)
 static const int32_t accel1[SIM_ADIS_IMU_VARIANTS][3] = {
     {150, -75, 294},    /* 0.5/0.003333 = 150.015, -75.0075, 294.03 */
     {1502, -751, 2943}, /* 0.5/0.000333 = 1501.50, -750.75, 2942.94 */
-    {500, -250, 980},
-    {150, -75, 294},
-    {150, -75, 294},
-    {150, -75, 294},
+    {500, -250, 980},   {150, -75, 294}, {150, -75, 294}, {150, -75, 294},
 };
 /* Physical accel of those counts in Q16.16 g: round(counts x lsb_ug x 65536 / 1e6). */
 static const int32_t accel1_q16[SIM_ADIS_IMU_VARIANTS][3] = {
@@ -66,25 +63,26 @@ static void check_sample1(enum sim_adis_imu_variant v, const struct adis_imu_sam
 {
     struct adis_imu_phys p;
     const uint16_t all = is_1640x(v)
-        ? (uint16_t)(ADIS_IMU_CH_ALL & ~(ADIS_IMU_CH(ADIS_IMU_CH_TEMP1) | ADIS_IMU_CH(ADIS_IMU_CH_TEMP2)))
-        : (uint16_t)(ADIS_IMU_CH_ALL & ~ADIS_IMU_CH_MAGNS);
+                             ? (uint16_t)(ADIS_IMU_CH_ALL & ~(ADIS_IMU_CH(ADIS_IMU_CH_TEMP1) |
+                                                              ADIS_IMU_CH(ADIS_IMU_CH_TEMP2)))
+                             : (uint16_t)(ADIS_IMU_CH_ALL & ~ADIS_IMU_CH_MAGNS);
     unsigned i;
     CHECK_EQ_HEX(s->present, all);
     CHECK_EQ_HEX(s->valid, all);
     CHECK_EQ_HEX(s->stale, 0);
-    CHECK_EQ_HEX(s->raw[ADIS_IMU_CH_GYRO_X], word14(200));   /* 10 / 0.05 */
-    CHECK_EQ_HEX(s->raw[ADIS_IMU_CH_GYRO_Y], word14(-410));  /* -20.5 / 0.05: 0xBE66 */
-    CHECK_EQ_HEX(s->raw[ADIS_IMU_CH_GYRO_Z], word14(2469));  /* 123.45 / 0.05 */
+    CHECK_EQ_HEX(s->raw[ADIS_IMU_CH_GYRO_X], word14(200));  /* 10 / 0.05 */
+    CHECK_EQ_HEX(s->raw[ADIS_IMU_CH_GYRO_Y], word14(-410)); /* -20.5 / 0.05: 0xBE66 */
+    CHECK_EQ_HEX(s->raw[ADIS_IMU_CH_GYRO_Z], word14(2469)); /* 123.45 / 0.05 */
     CHECK_EQ_INT(s->counts[ADIS_IMU_CH_GYRO_Y], -410);
     for (i = 0; i < 3u; i++) {
         CHECK_EQ_INT(s->counts[ADIS_IMU_CH_ACCEL_X + i], accel1[v][i]);
         CHECK_EQ_HEX(s->raw[ADIS_IMU_CH_ACCEL_X + i], word14(accel1[v][i]));
     }
     CHECK_EQ_HEX(s->raw[ADIS_IMU_CH_SUPPLY], 0x8000u | 2068u); /* 5 V / 2.418 mV = 0x814 */
-    CHECK_EQ_INT(s->counts[ADIS_IMU_CH_AUX], 1862);             /* 1.5 V / 805.8 uV */
+    CHECK_EQ_INT(s->counts[ADIS_IMU_CH_AUX], 1862);            /* 1.5 V / 805.8 uV */
     if (is_1640x(v)) {
-        CHECK_EQ_INT(s->counts[ADIS_IMU_CH_TEMP0], 107);        /* 15 C / 0.14 */
-        CHECK_EQ_INT(s->counts[ADIS_IMU_CH_MAGN_X], 500);       /* 0.25 G / 0.5 mG */
+        CHECK_EQ_INT(s->counts[ADIS_IMU_CH_TEMP0], 107);  /* 15 C / 0.14 */
+        CHECK_EQ_INT(s->counts[ADIS_IMU_CH_MAGN_X], 500); /* 0.25 G / 0.5 mG */
         CHECK_EQ_INT(s->counts[ADIS_IMU_CH_MAGN_Y], -200);
         CHECK_EQ_INT(s->counts[ADIS_IMU_CH_MAGN_Z], 1000);
     } else {
@@ -93,16 +91,16 @@ static void check_sample1(enum sim_adis_imu_variant v, const struct adis_imu_sam
         }
     }
     REQUIRE(adis_imu_to_phys(&fx.imu, s, &p) == 0);
-    CHECK_EQ_INT(p.gyro_dps[0], 655360);    /* 10.0 deg/s exactly */
-    CHECK_EQ_INT(p.gyro_dps[1], -1343488);  /* -20.5 */
-    CHECK_EQ_INT(p.gyro_dps[2], 8090419);   /* 123.45 x 65536 = 8090419.2 */
+    CHECK_EQ_INT(p.gyro_dps[0], 655360);   /* 10.0 deg/s exactly */
+    CHECK_EQ_INT(p.gyro_dps[1], -1343488); /* -20.5 */
+    CHECK_EQ_INT(p.gyro_dps[2], 8090419);  /* 123.45 x 65536 = 8090419.2 */
     for (i = 0; i < 3u; i++) {
         CHECK_EQ_INT(p.accel_g[i], accel1_q16[v][i]);
     }
-    CHECK_EQ_INT(p.supply_v, 327708);       /* 2068 x 2.418 mV = 5.000424 V */
-    CHECK_EQ_INT(p.aux_v, 98330);           /* 1862 x 805.8 uV = 1.5003996 V */
+    CHECK_EQ_INT(p.supply_v, 327708); /* 2068 x 2.418 mV = 5.000424 V */
+    CHECK_EQ_INT(p.aux_v, 98330);     /* 1862 x 805.8 uV = 1.5003996 V */
     if (is_1640x(v)) {
-        CHECK_EQ_INT(p.temp_c[0], 2620129); /* 25 + 107 x 0.14 = 39.98 C */
+        CHECK_EQ_INT(p.temp_c[0], 2620129);   /* 25 + 107 x 0.14 = 39.98 C */
         CHECK_EQ_INT(p.magn_gauss[1], -6554); /* -0.1 G */
     } else {
         CHECK_EQ_INT(p.temp_c[2], 2618819); /* 25 + 110 x 0.136 = 39.96 C */
@@ -251,7 +249,7 @@ static void test_stale(void)
     CHECK_EQ_HEX(s.stale, s.present);
     CHECK_EQ_INT(s.counts[ADIS_IMU_CH_GYRO_X], 200); /* the data is there, but not valid */
     CHECK_OK(adis_imu_to_phys(&fx.imu, &s, &p));
-    CHECK_EQ_INT(p.gyro_dps[0], 0);                  /* ...and never converted */
+    CHECK_EQ_INT(p.gyro_dps[0], 0); /* ...and never converted */
     /* Non-burst: one stale channel among fresh ones is flagged alone. */
     CHECK_OK(adis_imu_wait_dr(&fx.imu, 0, NULL));
     CHECK_OK(adis_imu_read_channels(&fx.imu, ADIS_IMU_CH(ADIS_IMU_CH_GYRO_X), &s));
@@ -567,7 +565,8 @@ static void test_offsets(void)
     CHECK_EQ_INT(c, -4096);
     /* Effect on the output (offset adds [U]): +80 LSB = +1 deg/s = +20 output counts. */
     CHECK_OK(adis_imu_set_gyro_offset(&fx.imu, 0, 80));
-    CHECK_OK(adis_imu_set_gyro_offset(&fx.imu, 1, adis_imu_gyro_off_from_dps_q16(-65536 / 2, NULL)));
+    CHECK_OK(
+        adis_imu_set_gyro_offset(&fx.imu, 1, adis_imu_gyro_off_from_dps_q16(-65536 / 2, NULL)));
     CHECK_OK(adis_imu_dr_flush(&fx.imu)); /* a sample taken with the new offsets */
     CHECK_OK(adis_imu_wait_dr(&fx.imu, 0, NULL));
     CHECK_OK(adis_imu_read_burst(&fx.imu, &s));
@@ -704,11 +703,11 @@ static void test_registers_and_arguments(void)
     CHECK_ERR(adis_imu_read_channels(&fx.imu, ADIS_IMU_CH(ADIS_IMU_CH_TEMP2), &smp), INC_ERR_INVAL);
     CHECK_ERR(adis_imu_command(&fx.imu, (enum adis_imu_cmd)0x03), INC_ERR_INVAL);
     CHECK_ERR(adis_imu_command(&fx.imu, (enum adis_imu_cmd)0x20), INC_ERR_INVAL);
-    CHECK_ERR(adis_imu_read_reg(&fx.imu, 0x3E, &v), INC_ERR_INVAL);  /* write-only */
-    CHECK_ERR(adis_imu_read_reg(&fx.imu, 0x52, &v), INC_ERR_INVAL);  /* not on the 1640x */
-    CHECK_ERR(adis_imu_read_reg(&fx.imu, 0x57, &v), INC_ERR_INVAL);  /* odd */
-    CHECK_ERR(adis_imu_write_reg(&fx.imu, 0x56, 1), INC_ERR_INVAL);  /* read-only */
-    CHECK_ERR(adis_imu_write_reg(&fx.imu, 0x36, 1), INC_ERR_INVAL);  /* has its own function */
+    CHECK_ERR(adis_imu_read_reg(&fx.imu, 0x3E, &v), INC_ERR_INVAL); /* write-only */
+    CHECK_ERR(adis_imu_read_reg(&fx.imu, 0x52, &v), INC_ERR_INVAL); /* not on the 1640x */
+    CHECK_ERR(adis_imu_read_reg(&fx.imu, 0x57, &v), INC_ERR_INVAL); /* odd */
+    CHECK_ERR(adis_imu_write_reg(&fx.imu, 0x56, 1), INC_ERR_INVAL); /* read-only */
+    CHECK_ERR(adis_imu_write_reg(&fx.imu, 0x36, 1), INC_ERR_INVAL); /* has its own function */
     CHECK_ERR(adis_imu_write_reg(&fx.imu, 0x3E, 1), INC_ERR_INVAL);
     CHECK_ERR(adis_imu_dr_config(&fx.imu, true, (enum adis_imu_dr_line)2, false), INC_ERR_INVAL);
     /* plain register access */

@@ -34,8 +34,8 @@ static struct trace_rec rec;
 static struct trace_replay rp;
 static struct result live, replayed;
 
-static void run_scenario(const struct spi_bus *bus, const struct hal *hal, enum sim_adis_imu_variant v,
-                         struct result *r)
+static void run_scenario(const struct spi_bus *bus, const struct hal *hal,
+                         enum sim_adis_imu_variant v, struct result *r)
 {
     struct adis_imu_cfg c;
     memset(&c, 0, sizeof(c));
@@ -55,8 +55,8 @@ static void run_scenario(const struct spi_bus *bus, const struct hal *hal, enum 
     r->err[3] = adis_imu_wait_dr(&imu, 0, NULL);
     r->err[4] = adis_imu_read_channels(&imu, ADIS_IMU_CH_ALL, &r->s[1]);
     (void)adis_imu_wait_dr(&imu, 0, NULL);
-    r->err[5] = adis_imu_read_channels(&imu, ADIS_IMU_CH_GYROS | ADIS_IMU_CH_ACCELS | ADIS_IMU_CH_TEMPS,
-                                       &r->s[2]);
+    r->err[5] = adis_imu_read_channels(
+        &imu, ADIS_IMU_CH_GYROS | ADIS_IMU_CH_ACCELS | ADIS_IMU_CH_TEMPS, &r->s[2]);
     r->err[6] = adis_imu_set_gyro_offset(&imu, 2, -1236); /* -15.45 deg/s */
     if (r->err[6] == INC_OK) {
         r->err[6] = adis_imu_get_gyro_offset(&imu, 2, &r->offset);
@@ -102,9 +102,10 @@ static int record(enum sim_adis_imu_variant v, const char *path, struct result *
     if (err != INC_OK) {
         return err;
     }
-    trace_rec_comment(&rec, v == SIM_ADIS16405
-                                ? "ADIS16405 (sim): init, burst, register reads, offset, low power"
-                                : "ADIS16364 (sim): init, burst, register reads, offset, low power");
+    trace_rec_comment(&rec,
+                      v == SIM_ADIS16405
+                          ? "ADIS16405 (sim): init, burst, register reads, offset, low power"
+                          : "ADIS16364 (sim): init, burst, register reads, offset, low power");
     run_scenario(&rec.bus, &rec.hal, v, r);
     err = trace_rec_close(&rec);
     return fx_violations() == 0u ? err : INC_ERR_TIMING;

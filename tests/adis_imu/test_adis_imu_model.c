@@ -85,7 +85,7 @@ static void test_nd_ea_and_diag(void)
     /* at rest: z = 1 g / 3.333 mg = 300 counts, ND set until read */
     w = rd(0x0E);
     CHECK_EQ_HEX(w, 0x8000u | 300u);
-    CHECK_EQ_HEX(rd(0x0E), 300u);           /* ND cleared by the read */
+    CHECK_EQ_HEX(rd(0x0E), 300u);            /* ND cleared by the read */
     CHECK_EQ_HEX(rd(0x02), 0x8000u | 2068u); /* other registers keep their ND */
     wait_ms(2);
     CHECK_EQ_HEX(rd(0x0E), 0x8000u | 300u); /* a new sample sets it again */
@@ -112,20 +112,20 @@ static void test_nd_ea_and_diag(void)
 static void test_flash_reset_and_protocol(void)
 {
     setup(SIM_ADIS16362);
-    CHECK_OK(adis_write_reg(&dev, 0x1C, 0x1F00));  /* YGYRO_OFF = -256 */
-    CHECK_EQ_HEX(rd(0x1C), 0xFF00);                /* read back sign-extended */
-    CHECK_OK(adis_write_reg(&dev, 0x22, 0xFFFF));  /* only 12 bits kept */
+    CHECK_OK(adis_write_reg(&dev, 0x1C, 0x1F00)); /* YGYRO_OFF = -256 */
+    CHECK_EQ_HEX(rd(0x1C), 0xFF00);               /* read back sign-extended */
+    CHECK_OK(adis_write_reg(&dev, 0x22, 0xFFFF)); /* only 12 bits kept */
     CHECK_EQ_HEX(part.reg[0x22 >> 1], 0x0FFF);
-    CHECK_OK(adis_write_byte(&dev, 0x3E, 0x08));   /* flash update */
+    CHECK_OK(adis_write_byte(&dev, 0x3E, 0x08)); /* flash update */
     CHECK(sim_adis_imu_is_busy(&part));
     wait_ms(SIM_ADIS_IMU_FLASH_UPDATE_MS);
     CHECK_EQ_HEX(rd(0x00), 1);
     CHECK_OK(adis_write_reg(&dev, 0x1C, 0x0005));
-    CHECK_OK(adis_write_byte(&dev, 0x3E, 0x80));   /* reset: the flash value comes back */
+    CHECK_OK(adis_write_byte(&dev, 0x3E, 0x80)); /* reset: the flash value comes back */
     wait_ms(60);
     CHECK_EQ_HEX(rd(0x1C), 0xFF00);
     CHECK_EQ_HEX(rd(0x22), 0xFFFF);
-    CHECK_OK(adis_write_byte(&dev, 0x3E, 0x02));   /* factory restore */
+    CHECK_OK(adis_write_byte(&dev, 0x3E, 0x02)); /* factory restore */
     wait_ms(SIM_ADIS_IMU_FACTORY_RESTORE_MS);
     CHECK_EQ_HEX(rd(0x1C), 0);
     CHECK_EQ_HEX(rd(0x22), 0);
@@ -194,7 +194,7 @@ static void bang_word(uint16_t w, uint32_t period)
         hal_pin_write(&board.hal, SIM_BOARD_SCLK, false); /* leading edge: the part shifts */
         hal_pin_write(&board.hal, SIM_BOARD_MOSI, ((w >> b) & 1u) != 0u);
         hal_delay_ns(&board.hal, period / 2u);
-        hal_pin_write(&board.hal, SIM_BOARD_SCLK, true);  /* trailing edge: the part samples */
+        hal_pin_write(&board.hal, SIM_BOARD_SCLK, true); /* trailing edge: the part samples */
         hal_delay_ns(&board.hal, period - period / 2u);
     }
 }

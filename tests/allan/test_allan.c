@@ -35,7 +35,7 @@ static void test_exact(void)
     CHECK_NEAR(sim_allan_at(y, 100, 1.0, 7), 7.0 / sqrt(2.0), 1e-9);
     CHECK_NEAR(sim_allan_at(y, 100, 0.5, 7), 7.0 / sqrt(2.0), 1e-9);
     CHECK_NEAR(sim_allan_at(y, 100, 1.0, 49), 49.0 / sqrt(2.0), 1e-9);
-    CHECK(sim_allan_at(y, 100, 1.0, 50) < 0.0);  /* m > (n - 1) / 2 */
+    CHECK(sim_allan_at(y, 100, 1.0, 50) < 0.0); /* m > (n - 1) / 2 */
     CHECK(sim_allan_at(y, 100, 1.0, 0) < 0.0);
     CHECK(sim_allan_at(y, 100, 0.0, 1) < 0.0);
     CHECK(sim_allan_at(NULL, 100, 1.0, 1) < 0.0);
@@ -79,13 +79,13 @@ static void test_readoff(void)
     /* A hand-made curve: white -1/2 slope to 10 s, then a floor with a noisy tail. */
     struct sim_allan_point p[6] = {
         {0.5, 0.2 * sqrt(2.0), 0.001, 5}, {2.0, 0.2 / sqrt(2.0), 0.001, 20},
-        {10.0, 0.05, 0.001, 100},          {50.0, 0.04, 0.001, 500},
-        {100.0, 0.045, 0.002, 1000},       {400.0, 0.01, 0.005, 4000}};
+        {10.0, 0.05, 0.001, 100},         {50.0, 0.04, 0.001, 500},
+        {100.0, 0.045, 0.002, 1000},      {400.0, 0.01, 0.005, 4000}};
     struct sim_allan_readoff r;
     CHECK_OK(sim_allan_readoff(p, 6, 0.1, &r));
     CHECK(r.arw_valid);
-    CHECK_NEAR(r.arw, 0.2, 1e-12);              /* log-log interpolation of a -1/2 line */
-    CHECK_NEAR(r.adev_min, 0.04, 0.0);          /* the noisy last point (err 50 %) is skipped */
+    CHECK_NEAR(r.arw, 0.2, 1e-12);     /* log-log interpolation of a -1/2 line */
+    CHECK_NEAR(r.adev_min, 0.04, 0.0); /* the noisy last point (err 50 %) is skipped */
     CHECK_NEAR(r.tau_min_s, 50.0, 0.0);
     CHECK_NEAR(r.bias_instability, 0.04 / 0.664, 1e-15);
     CHECK(r.min_interior);
@@ -93,7 +93,7 @@ static void test_readoff(void)
     CHECK_NEAR(r.adev_min, 0.01, 0.0);
     CHECK(!r.min_interior);
     CHECK_OK(sim_allan_readoff(p + 2, 2, 0.1, &r));
-    CHECK(!r.arw_valid);                        /* 1 s is outside [10, 50] */
+    CHECK(!r.arw_valid); /* 1 s is outside [10, 50] */
     CHECK_ERR(sim_allan_readoff(p, 0, 0.1, &r), INC_ERR_INVAL);
     CHECK_ERR(sim_allan_readoff(p, 6, 1e-6, &r), INC_ERR_INVAL);
     CHECK_ERR(sim_allan_readoff(NULL, 6, 0.1, &r), INC_ERR_NULL);
@@ -279,8 +279,8 @@ static void test_csv(void)
 
 static void test_plot_output(void)
 {
-    struct sim_allan_point p[3] = {{0.1, 0.1, 0.01, 1}, {1.0, 0.03, 0.003, 10},
-                                   {10.0, 0.01, 0.002, 100}};
+    struct sim_allan_point p[3] = {
+        {0.1, 0.1, 0.01, 1}, {1.0, 0.03, 0.003, 10}, {10.0, 0.01, 0.002, 100}};
     const double theory[3] = {0.095, 0.031, 0.0098};
     struct sim_allan_readoff r;
     char buf[16384];

@@ -13,11 +13,11 @@
 /* ---- A scripted sensor ------------------------------------------------------------------------ */
 
 struct script {
-    struct app_sample s;        /* what every read returns ... */
-    int32_t wobble_x;           /* ... with x + wobble on odd reads, x - wobble on even ones */
-    uint32_t fail_every;        /* every n-th read fails (0: never) */
+    struct app_sample s; /* what every read returns ... */
+    int32_t wobble_x;    /* ... with x + wobble on odd reads, x - wobble on even ones */
+    uint32_t fail_every; /* every n-th read fails (0: never) */
     int fail_err;
-    int id_err;                 /* identity read error */
+    int id_err; /* identity read error */
     struct calrec_binding id;
     uint32_t reads;
 };
@@ -49,7 +49,7 @@ static const struct app_sensor_ops script_ops = {script_read, script_identity};
 static struct script sc;
 static struct app_sensor sensor = {&script_ops, &sc};
 
-#define G(mg) ((fx_q16_t)(((mg) * 65536 + ((mg) >= 0 ? 500 : -500)) / 1000))
+#define G(mg) ((fx_q16_t)(((mg)*65536 + ((mg) >= 0 ? 500 : -500)) / 1000))
 
 static void script_reset(void)
 {
@@ -97,7 +97,8 @@ static struct calstore store;
 
 static void store_reset(void)
 {
-    static const struct calstore_config c = {&ram_ops, NULL, PAGE, 8u, CALSTORE_ERASED, {0u, PAGE}, PAGE};
+    static const struct calstore_config c = {&ram_ops,        NULL,       PAGE, 8u,
+                                             CALSTORE_ERASED, {0u, PAGE}, PAGE};
     memset(flash, 0xFF, sizeof flash);
     REQUIRE(calstore_init(&store, &c) == INC_OK);
 }
@@ -178,10 +179,10 @@ static void test_cfg(void)
     CHECK_ERR(app_cfg_default(&c, 9999u), INC_ERR_INVAL);
     CHECK_ERR(app_cfg_default(&c, 10000001u), INC_ERR_INVAL);
     REQUIRE(app_cfg_default(&c, 819200u) == INC_OK);
-    CHECK_EQ_INT(c.still.window, 256);   /* round(819.2 * 0.3125) */
+    CHECK_EQ_INT(c.still.window, 256); /* round(819.2 * 0.3125) */
     CHECK_EQ_INT(c.avg_n, 2048);
-    CHECK_EQ_INT(c.budget.nonlinearity_g, 655);  /* 10 mg */
-    CHECK_EQ_INT(c.budget.temp_uncomp_g, 3277);  /* 50 mg */
+    CHECK_EQ_INT(c.budget.nonlinearity_g, 655); /* 10 mg */
+    CHECK_EQ_INT(c.budget.temp_uncomp_g, 3277); /* 50 mg */
     CHECK_OK(app_cfg_check(&c));
     REQUIRE(app_cfg_default(&c, 250000u) == INC_OK);
     CHECK_EQ_INT(c.still.window, 78);
@@ -485,7 +486,7 @@ static void test_eol(void)
     CHECK_ERR(app_eol_six_position(NULL, &rec), INC_ERR_NULL);
     REQUIRE(app_eol_six_position(faces, &rec) == INC_OK);
     CHECK_EQ_INT(rec.acc_offset[0], G(20));
-    CHECK_EQ_INT(rec.acc_gain[0], (int64_t)G(1020) * 16384);   /* (A+ - A-) / 2 in Q30, exact */
+    CHECK_EQ_INT(rec.acc_gain[0], (int64_t)G(1020) * 16384); /* (A+ - A-) / 2 in Q30, exact */
     CHECK_EQ_INT(rec.acc_offset[1], 0);
     CHECK_EQ_INT(rec.acc_gain[2], FX_Q30_ONE);
     CHECK_EQ_INT(rec.gyro_offset[0], FX_Q16_HALF);

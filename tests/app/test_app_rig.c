@@ -96,7 +96,7 @@ static void test_adis16405_exact(void)
         REQUIRE(cal_acc_apply(&ref, in, out) == INC_OK);
         CHECK_EQ_INT(r.accel_g[0], out[0]);
         CHECK_EQ_INT(r.accel_g[2], out[2]);
-        CHECK_NEAR_INT(out[0], FX_Q16_ONE / 10, 1);   /* 30 / 300 counts */
+        CHECK_NEAR_INT(out[0], FX_Q16_ONE / 10, 1); /* 30 / 300 counts */
         CHECK_EQ_INT(r.slope.slope_deg, fx_atan2_deg(out[0], out[2]));
     }
     CHECK(r.valid);
@@ -128,7 +128,8 @@ static void test_sca3000_part_a(void)
     /* Part A's x flip offset at 25 degC: bias + scale * nl2 (within the face noise). */
     CHECK_NEAR(rec.acc_offset[0] / 65536.0,
                sim_calpart_tcurve_eval(&rig.errors.p.acc_bias[0], 25.0, 0.0) +
-                   sim_calpart_tcurve_eval(&rig.errors.p.acc_scale[0], 25.0, 0.0) * rig.errors.p.acc_nl2[0],
+                   sim_calpart_tcurve_eval(&rig.errors.p.acc_scale[0], 25.0, 0.0) *
+                       rig.errors.p.acc_nl2[0],
                0.003);
     park(10.0, true, -1.0);
     /* At the calibration temperature: no model, but no drift either beyond the hysteresis
@@ -174,7 +175,8 @@ static void test_identity_and_bad_records(void)
 
     /* Another part of the same type (its serial number differs): the record is foreign. */
     serial = sim_adis_imu_peek(&rig.adis, ADIS1636X_REG_SERIAL_NUM);
-    rig.adis.reg[ADIS1636X_REG_SERIAL_NUM / 2u] = (uint16_t)(serial ^ 0x0077u); /* read-only: back door */
+    rig.adis.reg[ADIS1636X_REG_SERIAL_NUM / 2u] = (uint16_t)(serial ^
+                                                             0x0077u); /* read-only: back door */
     REQUIRE(epb_rig_power_up(&rig, &cfg) == INC_OK);
     CHECK_ERR(rig.app.cal_status, INC_ERR_MISMATCH);
     CHECK(!app_calibrated(&rig.app));

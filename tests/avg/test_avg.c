@@ -17,9 +17,9 @@
 #include <string.h>
 
 #if UNIT_REDUCED
-#define NOISE_K 2500u    /* independent outputs per rms estimate: rel. sd 1.4 % */
+#define NOISE_K 2500u /* independent outputs per rms estimate: rel. sd 1.4 % */
 #else
-#define NOISE_K 7200u    /* rel. sd 0.83 % */
+#define NOISE_K 7200u /* rel. sd 0.83 % */
 #endif
 
 /* Reference rounding: round(num / den), den > 0, ties away from zero, from the definition. */
@@ -82,7 +82,7 @@ static void test_init_rejects(void)
     CHECK_ERR(avg_cascade_push(&c, 1, &y, &f), INC_ERR_STATE);
     CHECK_ERR(avg_cascade_init(&c, lines, 64, 4, 5), INC_ERR_INVAL);
     CHECK_ERR(avg_cascade_init(&c, lines, 64, 0, 2), INC_ERR_INVAL);
-    CHECK_ERR(avg_cascade_init(&c, lines, 64, 17, 4), INC_ERR_INVAL);   /* 68 > 64 entries */
+    CHECK_ERR(avg_cascade_init(&c, lines, 64, 17, 4), INC_ERR_INVAL);     /* 68 > 64 entries */
     CHECK_ERR(avg_cascade_init(&c, lines, 64, 216, 4), INC_ERR_OVERFLOW); /* 216^4 > 2^31 */
     CHECK_ERR(avg_cascade_init(&c, lines, 64, 46341, 2), INC_ERR_OVERFLOW);
     CHECK_ERR(avg_cascade_init(&c, lines, 64, 1291, 3), INC_ERR_OVERFLOW);
@@ -91,10 +91,10 @@ static void test_init_rejects(void)
     CHECK_OK(avg_cascade_init(&c, lines, 64, 16, 4));
     CHECK_EQ_INT(avg_cascade_taps(&c), 61);
 
-    CHECK_ERR(avg_bartlett_init(&bt, 7, 2), INC_ERR_INVAL);   /* SENS_AVG code 7: not valid */
+    CHECK_ERR(avg_bartlett_init(&bt, 7, 2), INC_ERR_INVAL); /* SENS_AVG code 7: not valid */
     CHECK_ERR(avg_bartlett_push(&bt, 1, &y, &r, &f), INC_ERR_STATE);
     CHECK_ERR(avg_bartlett_init(&bt, 4, 0), INC_ERR_INVAL);
-    CHECK_ERR(avg_bartlett_init(&bt, 4, 17), INC_ERR_INVAL);  /* d > N = 16 would alias */
+    CHECK_ERR(avg_bartlett_init(&bt, 4, 17), INC_ERR_INVAL); /* d > N = 16 would alias */
     CHECK_OK(avg_bartlett_init(&bt, 4, 16));
     CHECK_OK(avg_bartlett_init(&bt, 0, 1));
     CHECK_ERR(avg_bartlett_init(&bt, 0, 2), INC_ERR_INVAL);
@@ -154,7 +154,7 @@ static void test_block_exact(void)
     CHECK_OK(avg_block_push(&b, 7, &mean, &done));
     CHECK_OK(avg_block_push(&b, 8, &mean, &done));
     CHECK_OK(avg_block_partial(&b, &mean, &cnt));
-    CHECK_EQ_INT(mean, 8);   /* 7.5 -> 8 */
+    CHECK_EQ_INT(mean, 8); /* 7.5 -> 8 */
     CHECK_EQ_INT(cnt, 2);
     avg_block_restart(&b);
     CHECK_ERR(avg_block_partial(&b, &mean, &cnt), INC_ERR_STATE);
@@ -194,8 +194,8 @@ static void test_moving_exact(void)
     uint32_t i;
     sim_rng_seed(&rng, 2);
     check_moving(1, 100, false);
-    check_moving(16, 4096, false);   /* power of two: shift path */
-    check_moving(13, 4096, false);   /* division path */
+    check_moving(16, 4096, false); /* power of two: shift path */
+    check_moving(13, 4096, false); /* division path */
     check_moving(64, 4096, true);
     check_moving(7, 1000, true);
     /* warm-up and restart; the running sum never drifts over a long run */
@@ -372,8 +372,8 @@ static void test_bartlett(void)
         CHECK_EQ_INT(y, INT32_MIN);
         avg_bartlett_restart(&b);
         for (i = 0; i < 640u; i++) {
-            CHECK_OK(avg_bartlett_push(&b, (i / 50u) % 2u ? INT32_MIN : INT32_MAX, &y, &ready,
-                                       NULL));
+            CHECK_OK(
+                avg_bartlett_push(&b, (i / 50u) % 2u ? INT32_MIN : INT32_MAX, &y, &ready, NULL));
         }
     }
 }
@@ -417,8 +417,14 @@ static double measure(enum kind kd, uint32_t n, unsigned p, uint32_t *stride_out
         bool out = false, full = true;
         switch (kd) {
         case BLOCK: (void)avg_block_push(&b, x, &y, &out); break;
-        case MOVING: (void)avg_moving_push(&mv, x, &y, &full); out = true; break;
-        case CASCADE: (void)avg_cascade_push(&c, x, &y, &full); out = true; break;
+        case MOVING:
+            (void)avg_moving_push(&mv, x, &y, &full);
+            out = true;
+            break;
+        case CASCADE:
+            (void)avg_cascade_push(&c, x, &y, &full);
+            out = true;
+            break;
         default: (void)avg_bartlett_push(&bt, x, &y, &out, &full); break;
         }
         if (!out || !full) {
@@ -472,8 +478,8 @@ static void test_noise_law(void)
         const double want = sqrt(NOISE_VAR / ns[i] + 1.0 / 12.0);
         const double rb = measure(BLOCK, ns[i], 0, &stride);
         const double rm = measure(MOVING, ns[i], 0, &stride);
-        printf("  N %4u: block rms %.2f, moving rms %.2f, sigma/sqrt(N) %.2f\n",
-               (unsigned)ns[i], rb, rm, sigma / sqrt((double)ns[i]));
+        printf("  N %4u: block rms %.2f, moving rms %.2f, sigma/sqrt(N) %.2f\n", (unsigned)ns[i],
+               rb, rm, sigma / sqrt((double)ns[i]));
         CHECK_NEAR(rb, want, 0.05 * want);
         CHECK_NEAR(rm, want, 0.05 * want);
     }

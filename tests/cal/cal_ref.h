@@ -46,9 +46,7 @@ static inline double ref_eval(const struct calrec_tmodel *m, int32_t t_raw)
                 m->p[6] * u * u * u;
         }
         break;
-    case CALREC_TM_LORENTZ:
-        y = m->p[0] + m->p[1] * lorentz(t, m->p[2], m->p[3]);
-        break;
+    case CALREC_TM_LORENTZ: y = m->p[0] + m->p[1] * lorentz(t, m->p[2], m->p[3]); break;
     case CALREC_TM_PWL: {
         const double last = (double)m->t_ref + (double)(m->n - 1) * m->t_span;
         double s;
@@ -62,8 +60,7 @@ static inline double ref_eval(const struct calrec_tmodel *m, int32_t t_raw)
         y = m->p[i] + (double)(m->p[i + 1] - m->p[i]) * (s - i);
         break;
     }
-    default:
-        break;
+    default: break;
     }
     return y;
 }

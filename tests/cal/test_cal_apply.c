@@ -19,7 +19,9 @@ static void ref_apply_state(const struct calrec *r, const double off[3], const d
         n[i] = v + d * CALT_Q16;
     }
     for (i = 0; i < 3u; i++) {
-        out[i] = (r->acc_misalign[i][0] * n[0] + r->acc_misalign[i][1] * n[1] + r->acc_misalign[i][2] * n[2]) / CALT_Q30;
+        out[i] = (r->acc_misalign[i][0] * n[0] + r->acc_misalign[i][1] * n[1] +
+                  r->acc_misalign[i][2] * n[2]) /
+                 CALT_Q30;
     }
 }
 
@@ -107,7 +109,8 @@ static void sweep_apply(int extreme, double bound_state, double bound_model, con
             unsigned i;
             for (i = 0; i < 3u; i++) {
                 /* Mostly within +-2 g (tilt, vibration), some up to the input limit. */
-                in[i] = (fx_q16_t)calt_range(&s, (j % 8u) ? -2 * 65536 : -CAL_ACC_IN_MAX, (j % 8u) ? 2 * 65536 : CAL_ACC_IN_MAX);
+                in[i] = (fx_q16_t)calt_range(&s, (j % 8u) ? -2 * 65536 : -CAL_ACC_IN_MAX,
+                                             (j % 8u) ? 2 * 65536 : CAL_ACC_IN_MAX);
             }
             CHECK_OK(cal_acc_apply(&st, in, out));
             /* Against exact math on the state's own off and inv_gain. */
@@ -119,7 +122,8 @@ static void sweep_apply(int extreme, double bound_state, double bound_model, con
             /* Against the double-precision model of the record at t. */
             for (i = 0; i < 3u; i++) {
                 const double b = r.acc_offset[i] + ref_eval(&r.acc_tbias[i], t);
-                const double kk = r.acc_gain[i] / CALT_Q30 * (1.0 + ref_eval(&r.acc_tscale[i], t) / CALT_Q30);
+                const double kk = r.acc_gain[i] / CALT_Q30 *
+                                  (1.0 + ref_eval(&r.acc_tscale[i], t) / CALT_Q30);
                 off[i] = b;
                 inv[i] = CALT_Q30 / kk;
             }
@@ -139,8 +143,14 @@ static void sweep_apply(int extreme, double bound_state, double bound_model, con
     CHECK(refused < records / 10u + 1u);
 }
 
-static void test_apply_typical(void) { sweep_apply(0, 1.75, 5.0, "typical"); }
-static void test_apply_extreme(void) { sweep_apply(1, 3.5, 18.0, "at the limits"); }
+static void test_apply_typical(void)
+{
+    sweep_apply(0, 1.75, 5.0, "typical");
+}
+static void test_apply_extreme(void)
+{
+    sweep_apply(1, 3.5, 18.0, "at the limits");
+}
 
 static void test_plausibility_and_range(void)
 {
@@ -173,7 +183,8 @@ static void test_plausibility_and_range(void)
     CHECK_NEAR(out[2], 65536 / (0.75 * 0.875), 1.0);
     /* Offset + tbias beyond 1 g. */
     r.acc_tscale[2].kind = CALREC_TM_NONE;
-    r.acc_tscale[2].t_ref = r.acc_tscale[2].t_span = r.acc_tscale[2].p[0] = r.acc_tscale[2].p[1] = 0;
+    r.acc_tscale[2].t_ref = r.acc_tscale[2].t_span = r.acc_tscale[2].p[0] = r.acc_tscale[2].p[1] =
+        0;
     r.acc_offset[0] = CALREC_LIM_ACC_OFFSET;
     r.acc_tbias[0].kind = CALREC_TM_LORENTZ;
     r.acc_tbias[0].p[0] = CALREC_LIM_TBIAS - 1000;
@@ -216,7 +227,8 @@ static void test_gyro(void)
             }
             CHECK_OK(cal_gyro_apply(&g, in, out));
             for (i = 0; i < 3u; i++) {
-                calt_err_add(&e, out[i] - ((double)in[i] - r.gyro_offset[i]) / (r.gyro_scale[i] / CALT_Q30));
+                calt_err_add(&e, out[i] - ((double)in[i] - r.gyro_offset[i]) /
+                                              (r.gyro_scale[i] / CALT_Q30));
             }
         }
         {

@@ -32,8 +32,8 @@ static void put32(uint32_t v)
 
 static void test_bitident(void)
 {
-    static const int32_t kinds[6] = {CALREC_TM_NONE, CALREC_TM_LINEAR, CALREC_TM_PARABOLA,
-                                     CALREC_TM_LORENTZ, CALREC_TM_PWL, CALREC_TM_LORENTZ_CUBIC};
+    static const int32_t kinds[6] = {CALREC_TM_NONE,    CALREC_TM_LINEAR, CALREC_TM_PARABOLA,
+                                     CALREC_TM_LORENTZ, CALREC_TM_PWL,    CALREC_TM_LORENTZ_CUBIC};
     uint32_t s = 0x5EED0001u;
     unsigned k, j;
     /* Temperature models, both y formats. */
@@ -42,7 +42,9 @@ static void test_bitident(void)
         random_model(&s, kinds[k % 6u], (k & 1u) ? CALREC_LIM_TSCALE : CALREC_LIM_TBIAS, k, &m);
         for (j = 0; j < 20u; j++) {
             int32_t y = 0;
-            const int32_t t = j == 0 ? INT32_MIN : j == 1 ? INT32_MAX : (int32_t)calt_range(&s, -150 * 65536, 250 * 65536);
+            const int32_t t = j == 0   ? INT32_MIN
+                              : j == 1 ? INT32_MAX
+                                       : (int32_t)calt_range(&s, -150 * 65536, 250 * 65536);
             put32((uint32_t)cal_tmodel_eval(&m, t, &y));
             put32((uint32_t)y);
         }
@@ -63,19 +65,23 @@ static void test_bitident(void)
             fx_q16_t in[3], out[3];
             unsigned i;
             for (i = 0; i < 3u; i++) {
-                in[i] = j == 0 ? (i ? INT32_MIN : INT32_MAX) : (int32_t)calt_range(&s, -3 * 65536, 3 * 65536);
+                in[i] = j == 0 ? (i ? INT32_MIN : INT32_MAX)
+                               : (int32_t)calt_range(&s, -3 * 65536, 3 * 65536);
             }
             put32((uint32_t)cal_acc_apply(&st, in, out));
-            for (i = 0; i < 3u; i++) put32((uint32_t)out[i]);
+            for (i = 0; i < 3u; i++)
+                put32((uint32_t)out[i]);
             put32((uint32_t)cal_gyro_apply(&g, in, out));
-            for (i = 0; i < 3u; i++) put32((uint32_t)out[i]);
+            for (i = 0; i < 3u; i++)
+                put32((uint32_t)out[i]);
         }
     }
     /* Procedures. */
     for (k = 0; k < 2000u; k++) {
         fx_q16_t o = 0;
         fx_q30_t g = 0;
-        const int32_t ap = (int32_t)calt_range(&s, 40000, 90000), an = (int32_t)calt_range(&s, -90000, -40000);
+        const int32_t ap = (int32_t)calt_range(&s, 40000, 90000),
+                      an = (int32_t)calt_range(&s, -90000, -40000);
         put32((uint32_t)cal_flip(ap, an, &o, &g));
         put32((uint32_t)o);
         put32((uint32_t)g);
@@ -86,7 +92,8 @@ static void test_bitident(void)
         fx_q30_t sc = 0;
         put32((uint32_t)cal_turn_start(&t, off, 1310720));
         for (k = 0; k < 3277u; k++) {
-            const fx_q16_t r[3] = {(int32_t)calt_range(&s, 5890000, 5910000), (int32_t)calt_range(&s, -60000, 60000), 0};
+            const fx_q16_t r[3] = {(int32_t)calt_range(&s, 5890000, 5910000),
+                                   (int32_t)calt_range(&s, -60000, 60000), 0};
             put32((uint32_t)cal_turn_add(&t, r));
         }
         put32((uint32_t)cal_turn_scale(&t, 0, FX_Q16_INT(360), &sc));

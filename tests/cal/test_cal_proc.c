@@ -7,7 +7,7 @@
 
 #include <string.h>
 
-#define G(x) ((fx_q16_t)lround((x) * CALT_Q16))
+#define G(x) ((fx_q16_t)lround((x)*CALT_Q16))
 
 static void test_flip_exact(void)
 {
@@ -58,8 +58,10 @@ static void test_flip_bound(void)
     const unsigned n = CALT_DENSITY(1000000u, 200000u);
     unsigned i;
     for (i = 0; i < n; i++) {
-        const int64_t g2 = calt_range(&s, 2 * (int64_t)(CAL_GAIN_MIN >> 14) + 1, 2 * (int64_t)(CAL_GAIN_MAX >> 14) - 1);
-        const int64_t o2 = calt_range(&s, -2 * (int64_t)CAL_OFFSET_MAX + 1, 2 * (int64_t)CAL_OFFSET_MAX - 1);
+        const int64_t g2 = calt_range(&s, 2 * (int64_t)(CAL_GAIN_MIN >> 14) + 1,
+                                      2 * (int64_t)(CAL_GAIN_MAX >> 14) - 1);
+        const int64_t o2 = calt_range(&s, -2 * (int64_t)CAL_OFFSET_MAX + 1,
+                                      2 * (int64_t)CAL_OFFSET_MAX - 1);
         /* a_pos - a_neg = g2, a_pos + a_neg = o2 (same parity needed for integers) */
         const int64_t sum = o2, diff = g2 + ((g2 ^ o2) & 1);
         const fx_q16_t ap = (fx_q16_t)((sum + diff) / 2), an = (fx_q16_t)((sum - diff) / 2);
@@ -127,7 +129,8 @@ static void test_one_point(void)
 }
 
 /* Faces of a part with offset o, gains g and a small cross-axis coupling, in g. */
-static void make_faces(fx_q16_t face[CAL_FACES][3], const double o[3], const double g[3], double cross)
+static void make_faces(fx_q16_t face[CAL_FACES][3], const double o[3], const double g[3],
+                       double cross)
 {
     unsigned f, i;
     for (f = 0; f < CAL_FACES; f++) {
@@ -197,7 +200,7 @@ static void test_avg(void)
     CHECK_OK(cal_avg_add(&a, s1));
     CHECK_OK(cal_avg_add(&a, s2));
     CHECK_OK(cal_avg_mean(&a, 1, m));
-    CHECK_EQ_INT(m[0], 11);  /* 10.5 -> 11 (ties away from zero) */
+    CHECK_EQ_INT(m[0], 11); /* 10.5 -> 11 (ties away from zero) */
     CHECK_EQ_INT(m[1], -11);
     CHECK_EQ_INT(m[2], 4);
     /* Span 1 is still; a third sample that moves 5 LSB is motion for max_span 4. */

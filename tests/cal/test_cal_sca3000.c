@@ -117,15 +117,18 @@ static void expected_counts(const double f[3], double t, int32_t c[3])
     struct sim_calpart copy = errs; /* same hysteresis state, no side effect on the real one */
     unsigned i;
     sim_inertial_at_rest(&in);
-    for (i = 0; i < 3u; i++) in.accel_g[i] = f[i];
+    for (i = 0; i < 3u; i++)
+        in.accel_g[i] = f[i];
     in.temp_c = t;
     sim_calpart_apply(&copy, &in, &out, 0, 0.0);
-    for (i = 0; i < 3u; i++) c[i] = sim_quantise(out.accel_g[i], 0.00075, 13, NULL);
+    for (i = 0; i < 3u; i++)
+        c[i] = sim_quantise(out.accel_g[i], 0.00075, 13, NULL);
 }
 
 static void test_hook_and_six_position(void)
 {
-    static const double faces[CAL_FACES][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    static const double faces[CAL_FACES][3] = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},
+                                               {0, -1, 0}, {0, 0, 1},  {0, 0, -1}};
     fx_q16_t mean[CAL_FACES][3], off[3], exp_q16[CAL_FACES][3];
     fx_q30_t gain[3];
     unsigned f, i;
@@ -154,7 +157,8 @@ static void test_hook_and_six_position(void)
          * 0.75 mg quantisation. */
         CHECK_NEAR(off[i] / CALT_Q16,
                    sim_calpart_tcurve_eval(&errs.p.acc_bias[i], 25.0, errs.m) +
-                       errs.p.acc_nl2[i] * sim_calpart_tcurve_eval(&errs.p.acc_scale[i], 25.0, errs.m),
+                       errs.p.acc_nl2[i] *
+                           sim_calpart_tcurve_eval(&errs.p.acc_scale[i], 25.0, errs.m),
                    0.0004);
     }
     CHECK(board.log.total == 0u);
@@ -194,19 +198,23 @@ static void test_station_record_on_the_part(void)
             REQUIRE(read_mean(4, raw, last) == INC_OK);
             CHECK_OK(cal_acc_apply(&st, raw, out));
             for (i = 0; i < 3u; i++) {
-                const double ec = fabs(out[i] / CALT_Q16 - f[i]), er = fabs(raw[i] / CALT_Q16 - f[i]);
+                const double ec = fabs(out[i] / CALT_Q16 - f[i]),
+                             er = fabs(raw[i] / CALT_Q16 - f[i]);
                 worst_cal = ec > worst_cal ? ec : worst_cal;
                 worst_raw = er > worst_raw ? er : worst_raw;
                 CHECK(ec < 0.0015);
             }
         }
     }
-    printf("MEASURED SCA3000 + part A, -20..60 degC, tilts 0/+20/-30 deg: worst error %lld ug calibrated, "
-           "%lld ug uncalibrated\n", (long long)(worst_cal * 1e6), (long long)(worst_raw * 1e6));
+    printf(
+        "MEASURED SCA3000 + part A, -20..60 degC, tilts 0/+20/-30 deg: worst error %lld ug calibrated, "
+        "%lld ug uncalibrated\n",
+        (long long)(worst_cal * 1e6), (long long)(worst_raw * 1e6));
     CHECK(worst_raw > 0.010);
     /* A record for another part is refused by the binding (calstore would run uncalibrated). */
     id.revision ^= 1u;
-    CHECK_ERR(calrec_decode(golden_record_a, sizeof golden_record_a, &id, &rec, NULL), INC_ERR_MISMATCH);
+    CHECK_ERR(calrec_decode(golden_record_a, sizeof golden_record_a, &id, &rec, NULL),
+              INC_ERR_MISMATCH);
     CHECK_ERR(cal_acc_init(&st, &rec, FX_Q16_INT(25)), INC_ERR_NOT_CALIBRATED);
     CHECK(board.log.total == 0u);
 }

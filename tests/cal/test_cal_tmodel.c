@@ -21,10 +21,14 @@ static void sweep_kind(const char *name, int32_t kind, double bound)
             for (j = 0; j < temps; j++) {
                 int32_t t, y = 0;
                 /* Mostly inside the range, some beyond it, a few at the int32 ends. */
-                if (j == 0) t = INT32_MIN;
-                else if (j == 1) t = INT32_MAX;
-                else if (j == 2) t = m.t_ref;
-                else t = (int32_t)calt_range(&s, -150 * 65536, 250 * 65536);
+                if (j == 0)
+                    t = INT32_MIN;
+                else if (j == 1)
+                    t = INT32_MAX;
+                else if (j == 2)
+                    t = m.t_ref;
+                else
+                    t = (int32_t)calt_range(&s, -150 * 65536, 250 * 65536);
                 CHECK_OK(cal_tmodel_eval(&m, t, &y));
                 calt_err_add(&e, (double)y - ref_eval(&m, t));
             }
@@ -34,11 +38,26 @@ static void sweep_kind(const char *name, int32_t kind, double bound)
     CHECK(e.max <= bound);
 }
 
-static void test_linear(void) { sweep_kind("tmodel linear", CALREC_TM_LINEAR, 0.57); }
-static void test_parabola(void) { sweep_kind("tmodel parabola", CALREC_TM_PARABOLA, 1.25); }
-static void test_lorentz(void) { sweep_kind("tmodel lorentz", CALREC_TM_LORENTZ, 0.75); }
-static void test_pwl(void) { sweep_kind("tmodel pwl", CALREC_TM_PWL, 0.63); }
-static void test_lorentz_cubic(void) { sweep_kind("tmodel lorentz+cubic", CALREC_TM_LORENTZ_CUBIC, 2.7); }
+static void test_linear(void)
+{
+    sweep_kind("tmodel linear", CALREC_TM_LINEAR, 0.57);
+}
+static void test_parabola(void)
+{
+    sweep_kind("tmodel parabola", CALREC_TM_PARABOLA, 1.25);
+}
+static void test_lorentz(void)
+{
+    sweep_kind("tmodel lorentz", CALREC_TM_LORENTZ, 0.75);
+}
+static void test_pwl(void)
+{
+    sweep_kind("tmodel pwl", CALREC_TM_PWL, 0.63);
+}
+static void test_lorentz_cubic(void)
+{
+    sweep_kind("tmodel lorentz+cubic", CALREC_TM_LORENTZ_CUBIC, 2.7);
+}
 
 static void test_exact_points(void)
 {

@@ -64,14 +64,14 @@ static void test_hysteresis(void)
     in.accel_g[2] = 0.0;
     sim_calpart_apply(&part, &in, &out, 0, 0.001);
     CHECK_NEAR(out.accel_g[0], 0.0, 1e-15); /* m = 0 at start */
-    in.temp_c += 1.0;                        /* heating 1 degC: m = 2 * 1 / 4 = 0.5 */
+    in.temp_c += 1.0;                       /* heating 1 degC: m = 2 * 1 / 4 = 0.5 */
     sim_calpart_apply(&part, &in, &out, 0, 0.001);
     CHECK_NEAR(part.m, 0.5, 1e-15);
     CHECK_NEAR(out.accel_g[0], 0.0005, 1e-15);
-    in.temp_c += 10.0;                       /* saturates at the heating branch */
+    in.temp_c += 10.0; /* saturates at the heating branch */
     sim_calpart_apply(&part, &in, &out, 0, 0.001);
     CHECK_NEAR(out.accel_g[0], 0.001, 1e-15);
-    in.temp_c -= 2.0;                        /* cooling 2 degC: back to 0 */
+    in.temp_c -= 2.0; /* cooling 2 degC: back to 0 */
     sim_calpart_apply(&part, &in, &out, 0, 0.001);
     CHECK_NEAR(part.m, 0.0, 1e-15);
     in.temp_c -= 3.0;

@@ -13,29 +13,34 @@
 
 using namespace calstation;
 
-namespace {
+namespace
+{
 
 // What the part reports (g, before quantisation, no noise) for specific force f at T, m = 0.
-std::array<double, 3> truth_reading(const sim_calpart_params &p, const std::array<double, 3> &f, double t)
+std::array<double, 3> truth_reading(const sim_calpart_params &p, const std::array<double, 3> &f,
+                                    double t)
 {
     std::array<double, 3> r{};
     for (int i = 0; i < 3; i++) {
-        const double x = p.acc_axis[i][0] * f[0] + p.acc_axis[i][1] * f[1] + p.acc_axis[i][2] * f[2];
+        const double x = p.acc_axis[i][0] * f[0] + p.acc_axis[i][1] * f[1] +
+                         p.acc_axis[i][2] * f[2];
         const double h = x + p.acc_nl2[i] * x * x + p.acc_nl3[i] * x * x * x;
-        r[i] = sim_calpart_tcurve_eval(&p.acc_bias[i], t, 0.0) + sim_calpart_tcurve_eval(&p.acc_scale[i], t, 0.0) * h;
+        r[i] = sim_calpart_tcurve_eval(&p.acc_bias[i], t, 0.0) +
+               sim_calpart_tcurve_eval(&p.acc_scale[i], t, 0.0) * h;
     }
     return r;
 }
 
 // Worst |corrected - true| (g) over tilts within +-max_deg about x and y, over temperatures.
-double worst_error(const CalResult &c, const sim_calpart_params &p, double max_deg, double t_lo, double t_hi,
-                   bool with_nonlin = true, bool with_misalign = true)
+double worst_error(const CalResult &c, const sim_calpart_params &p, double max_deg, double t_lo,
+                   double t_hi, bool with_nonlin = true, bool with_misalign = true)
 {
     CalResult cc = c;
     for (int i = 0; i < 3; i++) {
         if (!with_nonlin) cc.acc_nonlin[i] = {0, 0, 0, 0};
         if (!with_misalign) {
-            for (int j = 0; j < 3; j++) cc.acc_misalign[i][j] = (i == j);
+            for (int j = 0; j < 3; j++)
+                cc.acc_misalign[i][j] = (i == j);
         }
     }
     double worst = 0.0;
@@ -43,10 +48,12 @@ double worst_error(const CalResult &c, const sim_calpart_params &p, double max_d
     for (double t = t_lo; t <= t_hi + 1e-9; t += 5.0) {
         for (double ax = -max_deg; ax <= max_deg + 1e-9; ax += max_deg / 6.0) {
             for (double ay = -max_deg; ay <= max_deg + 1e-9; ay += max_deg / 6.0) {
-                const std::array<double, 3> f = {std::sin(ay * k), -std::sin(ax * k) * std::cos(ay * k),
+                const std::array<double, 3> f = {std::sin(ay * k),
+                                                 -std::sin(ax * k) * std::cos(ay * k),
                                                  std::cos(ax * k) * std::cos(ay * k)};
                 const auto o = apply_double(cc, truth_reading(p, f, t), t);
-                for (int i = 0; i < 3; i++) worst = std::fmax(worst, std::fabs(o[i] - f[i]));
+                for (int i = 0; i < 3; i++)
+                    worst = std::fmax(worst, std::fabs(o[i] - f[i]));
             }
         }
     }
@@ -97,11 +104,13 @@ static void test_part_a_end_to_end()
         flip.acc_tbias[i] = TModel{};
         flip.acc_tscale[i] = TModel{};
         flip.acc_nonlin[i] = {0, 0, 0, 0};
-        for (int j = 0; j < 3; j++) flip.acc_misalign[i][j] = (i == j);
+        for (int j = 0; j < 3; j++)
+            flip.acc_misalign[i][j] = (i == j);
     }
     const double two_point = worst_error(flip, p, 30.0, 25.0, 25.0);
     std::printf("worst error within +-30 deg: %.3f mg over -20..60 degC, %.3f mg at 25 degC; "
-                "two-point flip only at 25 degC: %.3f mg\n", full * 1e3, at25 * 1e3, two_point * 1e3);
+                "two-point flip only at 25 degC: %.3f mg\n",
+                full * 1e3, at25 * 1e3, two_point * 1e3);
     CHECK(full < 0.0006);
     CHECK(at25 < 0.00045);
     CHECK(two_point > 0.008);
@@ -123,8 +132,9 @@ static void test_part_a_end_to_end()
         CHECK_EQ_INT(dec.acc_misalign[0][2], rec.acc_misalign[0][2]);
         FwCheck fw;
         REQUIRE(firmware_check(back, dec, fw).empty());
-        std::printf("firmware check: %zu rows, max |fw - double| %.2f LSB, max error %.3f mg, tilt rows %.3f mg\n",
-                    fw.rows, fw.max_lsb, fw.max_err_mg, fw.max_tilt_err_mg);
+        std::printf(
+            "firmware check: %zu rows, max |fw - double| %.2f LSB, max error %.3f mg, tilt rows %.3f mg\n",
+            fw.rows, fw.max_lsb, fw.max_err_mg, fw.max_tilt_err_mg);
         CHECK(fw.rows == 996);
         CHECK(fw.max_lsb <= 5.0);
         CHECK(fw.max_tilt_err_mg < 0.6);

@@ -9,13 +9,16 @@
 
 using namespace calstation;
 
-namespace {
+namespace
+{
 
-std::vector<TPoint> grid(double (*f)(double), double lo = -20.0, double hi = 60.0, double step = 10.0, int reps = 1)
+std::vector<TPoint> grid(double (*f)(double), double lo = -20.0, double hi = 60.0,
+                         double step = 10.0, int reps = 1)
 {
     std::vector<TPoint> v;
     for (int r = 0; r < reps; r++) {
-        for (double t = lo; t <= hi + 1e-9; t += step) v.push_back({t, f(t)});
+        for (double t = lo; t <= hi + 1e-9; t += step)
+            v.push_back({t, f(t)});
     }
     return v;
 }
@@ -26,10 +29,22 @@ double lor(double t, double y0, double h, double w, double tc)
     return y0 + h / (1.0 + r * r);
 }
 
-double f_lin(double t) { return 0.002 - 0.0001 * (t - 20.0); }
-double f_par(double t) { return 0.001 + 2e-5 * t - 3e-6 * t * t; }
-double f_lor_peak(double t) { return lor(t, 0.01, 0.02, 30.0, 20.0); }
-double f_lor_tail(double t) { return lor(t, -0.005, 0.012, 26.0, -25.0); }
+double f_lin(double t)
+{
+    return 0.002 - 0.0001 * (t - 20.0);
+}
+double f_par(double t)
+{
+    return 0.001 + 2e-5 * t - 3e-6 * t * t;
+}
+double f_lor_peak(double t)
+{
+    return lor(t, 0.01, 0.02, 30.0, 20.0);
+}
+double f_lor_tail(double t)
+{
+    return lor(t, -0.005, 0.012, 26.0, -25.0);
+}
 double f_lor_cubic(double t)
 {
     const double u = (t - 20.0) / 40.0;
@@ -49,7 +64,8 @@ double f_pwl(double t)
 double max_err(const TModel &m, double (*f)(double), double lo = -20.0, double hi = 60.0)
 {
     double e = 0.0;
-    for (double t = lo; t <= hi + 1e-9; t += 0.5) e = std::fmax(e, std::fabs(m.eval(t) - f(t)));
+    for (double t = lo; t <= hi + 1e-9; t += 0.5)
+        e = std::fmax(e, std::fabs(m.eval(t) - f(t)));
     return e;
 }
 
@@ -74,7 +90,8 @@ static void test_linear()
 static void test_three_point()
 {
     // Soak means at -20, -10, 25 (ambient), 40, 60: the procedure uses only cold, ambient, hot.
-    std::vector<TPoint> m = {{-20, f_par(-20)}, {-10, 1.0}, {25, f_par(25)}, {40, -1.0}, {60, f_par(60)}};
+    std::vector<TPoint> m = {
+        {-20, f_par(-20)}, {-10, 1.0}, {25, f_par(25)}, {40, -1.0}, {60, f_par(60)}};
     const TFit f = fit_three_point(m, 25.0);
     REQUIRE(f.ok);
     CHECK(f.model.kind == TKind::Parabola);

@@ -19,24 +19,26 @@ void fix_record(struct calrec *r)
 {
     unsigned a, k;
     static const int32_t tscale_pwl[9] = {-1300000, -975000, -650000, -325000, 0,
-                                          162779, 325558, 488337, 651116};
+                                          162779,   325558,  488337,  651116};
 
     calrec_set_default(r);
     fix_binding(&r->binding);
-    r->acc_offset[0] = -1311;        /* -20 mg */
-    r->acc_offset[1] = 655;          /* +10 mg */
-    r->acc_offset[2] = 3277;         /* +50 mg */
-    r->acc_gain[0] = 1084479242;     /* 1.01 */
-    r->acc_gain[1] = 1063004406;     /* 0.99 */
-    r->acc_gain[2] = 1076426179;     /* 1.0025 */
+    r->acc_offset[0] = -1311;    /* -20 mg */
+    r->acc_offset[1] = 655;      /* +10 mg */
+    r->acc_offset[2] = 3277;     /* +50 mg */
+    r->acc_gain[0] = 1084479242; /* 1.01 */
+    r->acc_gain[1] = 1063004406; /* 0.99 */
+    r->acc_gain[2] = 1076426179; /* 1.0025 */
     for (a = 0; a < CALREC_AXES; a++) {
         for (k = 0; k < CALREC_AXES; k++) {
-            r->acc_misalign[a][k] = (a == k) ? CALREC_Q30_ONE : (int32_t)(2147484 * (int32_t)(a + 1) - 1073742 * (int32_t)k);
+            r->acc_misalign[a][k] = (a == k) ? CALREC_Q30_ONE
+                                             : (int32_t)(2147484 * (int32_t)(a + 1) -
+                                                         1073742 * (int32_t)k);
         }
         r->acc_nonlin[a][0] = -(int32_t)a * 1000;
         r->acc_nonlin[a][1] = (int32_t)a * 2000;
-        r->acc_nonlin[a][2] = 10737418;   /* 0.01 /g */
-        r->acc_nonlin[a][3] = -85899346;  /* -0.08 /g^2 */
+        r->acc_nonlin[a][2] = 10737418;  /* 0.01 /g */
+        r->acc_nonlin[a][3] = -85899346; /* -0.08 /g^2 */
     }
     /* x: seed 000 three-point parabola, centred at 25 degC, span 40 degC. */
     r->acc_tbias[0].kind = CALREC_TM_PARABOLA;
@@ -71,12 +73,12 @@ void fix_record(struct calrec *r)
     r->acc_tscale[2].t_span = CALREC_Q16_ONE;
     r->acc_tscale[2].p[0] = 0;
     r->acc_tscale[2].p[1] = 162779;
-    r->gyro_offset[0] = 32768;       /* 0.5 deg/s */
-    r->gyro_offset[1] = -16384;      /* -0.25 deg/s */
-    r->gyro_offset[2] = 196608;      /* 3 deg/s */
+    r->gyro_offset[0] = 32768;  /* 0.5 deg/s */
+    r->gyro_offset[1] = -16384; /* -0.25 deg/s */
+    r->gyro_offset[2] = 196608; /* 3 deg/s */
     r->gyro_scale[0] = CALREC_Q30_ONE;
-    r->gyro_scale[1] = 1074815566;   /* 1.001 */
-    r->gyro_scale[2] = 1072668082;   /* 0.999 */
+    r->gyro_scale[1] = 1074815566; /* 1.001 */
+    r->gyro_scale[2] = 1072668082; /* 0.999 */
 }
 
 void fix_record_variant(struct calrec *r, int variant)
@@ -110,7 +112,8 @@ bool fix_record_equal(const struct calrec *x, const struct calrec *y)
     for (a = 0; a < CALREC_AXES; a++) {
         if (x->acc_offset[a] != y->acc_offset[a] || x->acc_gain[a] != y->acc_gain[a] ||
             x->gyro_offset[a] != y->gyro_offset[a] || x->gyro_scale[a] != y->gyro_scale[a] ||
-            !tm_equal(&x->acc_tbias[a], &y->acc_tbias[a]) || !tm_equal(&x->acc_tscale[a], &y->acc_tscale[a])) {
+            !tm_equal(&x->acc_tbias[a], &y->acc_tbias[a]) ||
+            !tm_equal(&x->acc_tscale[a], &y->acc_tscale[a])) {
             return false;
         }
         for (k = 0; k < CALREC_AXES; k++) {
@@ -132,7 +135,8 @@ bool fix_record_is_default(const struct calrec *r)
     /* Spelled out independently of calrec_set_default, so a wrong default is caught. */
     unsigned a, k;
     const struct calrec_binding *b = &r->binding;
-    if (r->valid || b->family || b->product || b->revision || b->serial || b->lot_id1 || b->lot_id2) {
+    if (r->valid || b->family || b->product || b->revision || b->serial || b->lot_id1 ||
+        b->lot_id2) {
         return false;
     }
     for (a = 0; a < CALREC_AXES; a++) {
@@ -166,7 +170,8 @@ bool fix_record_is_default(const struct calrec *r)
     return true;
 }
 
-int fix_store_init(struct fix_store *fs, uint8_t *mem, uint32_t mem_size, const struct fix_geometry *g)
+int fix_store_init(struct fix_store *fs, uint8_t *mem, uint32_t mem_size,
+                   const struct fix_geometry *g)
 {
     struct simflash_geometry geo;
     uint32_t slot = g->page_size * g->slot_pages;

@@ -28,7 +28,7 @@ struct fix_store {
     struct simflash flash;
     struct calstore store;
     struct calstore_config cfg;
-    uint32_t size;              /* bytes of flash in use (both slots) */
+    uint32_t size; /* bytes of flash in use (both slots) */
 };
 
 /* The binding of the known record (an ADIS16364 with serial and lot numbers). */
@@ -47,7 +47,8 @@ bool fix_record_equal(const struct calrec *a, const struct calrec *b);
 bool fix_record_is_default(const struct calrec *r);
 
 /* Set up flash over mem (>= 2 * slot bytes) and the store for geometry g. 0 or an error. */
-int fix_store_init(struct fix_store *fs, uint8_t *mem, uint32_t mem_size, const struct fix_geometry *g);
+int fix_store_init(struct fix_store *fs, uint8_t *mem, uint32_t mem_size,
+                   const struct fix_geometry *g);
 
 /* Put a committed image of r with sequence seq into slot s through the back door. */
 int fix_put_image(struct fix_store *fs, unsigned s, const uint8_t *img, uint32_t len);

@@ -63,8 +63,11 @@ static void test_round_trip(void)
 
 /* ---- Range limits: one table, checked on the struct and on the image. ---------------------- */
 
-#define FIELD(name, expr) \
-    static int32_t *name(struct calrec *r) { return &(expr); }
+#define FIELD(name, expr)                  \
+    static int32_t *name(struct calrec *r) \
+    {                                      \
+        return &(expr);                    \
+    }
 FIELD(f_acc_off0, r->acc_offset[0])
 FIELD(f_acc_gain1, r->acc_gain[1])
 FIELD(f_mis00, r->acc_misalign[0][0])
@@ -97,9 +100,9 @@ FIELD(f_ts2_p1, r->acc_tscale[2].p[1])
 struct limit_case {
     const char *what;
     int32_t *(*field)(struct calrec *r);
-    uint32_t off;  /* image offset, written out from the layout table in the docs */
-    int32_t ok;    /* accepted (at the limit) */
-    int32_t bad;   /* rejected (one step beyond) */
+    uint32_t off; /* image offset, written out from the layout table in the docs */
+    int32_t ok;   /* accepted (at the limit) */
+    int32_t bad;  /* rejected (one step beyond) */
 };
 
 static const struct limit_case limits[] = {
@@ -155,7 +158,8 @@ static void test_limits(void)
         *c->field(&r) = c->ok;
         err = calrec_check(&r);
         if (err) {
-            unit_fail(__FILE__, __LINE__, "%s: ok value %ld rejected (%d)", c->what, (long)c->ok, err);
+            unit_fail(__FILE__, __LINE__, "%s: ok value %ld rejected (%d)", c->what, (long)c->ok,
+                      err);
         }
         REQUIRE(calrec_encode(&r, 1u, ok_img, sizeof ok_img) == INC_OK);
         /* The table's offset really is where the encoder put the field. */
@@ -173,7 +177,8 @@ static void test_limits(void)
         fix_reseal(img);
         err = calrec_check_image(img, sizeof img, &r.binding);
         if (err != INC_ERR_RANGE) {
-            unit_fail(__FILE__, __LINE__, "%s: image with %ld gave %d, want RANGE", c->what, (long)c->bad, err);
+            unit_fail(__FILE__, __LINE__, "%s: image with %ld gave %d, want RANGE", c->what,
+                      (long)c->bad, err);
         }
         CHECK_ERR(calrec_decode(img, sizeof img, &r.binding, &back, NULL), INC_ERR_RANGE);
         CHECK(fix_record_is_default(&back));
@@ -193,15 +198,15 @@ static void test_lorentz_cubic_kind(void)
         unsigned word; /* 2 = t_ref, 3 = t_span, 4 + k = p[k] */
         int32_t ok, bad;
     } cases[] = {
-        {2, -6553600, -6553601},    /* t_ref >= -100 degC */
-        {3, 65536, 65535},          /* t_span >= 1 degC */
-        {3, 13107200, 13107201},    /* t_span <= 200 degC */
-        {4 + 1, -32768, -32769},    /* height within the bias limit (0.5 g) */
-        {4 + 2, 26214400, 26214401},/* w <= 400 degC */
-        {4 + 3, 13107200, 13107201},/* Tc <= 200 degC */
-        {4 + 6, 32768, 32769},      /* cubic coefficient within the bias limit */
-        {4 + 7, 0, 1},              /* first unused word */
-        {4 + 15, 0, -1},            /* last unused word */
+        {2, -6553600, -6553601},     /* t_ref >= -100 degC */
+        {3, 65536, 65535},           /* t_span >= 1 degC */
+        {3, 13107200, 13107201},     /* t_span <= 200 degC */
+        {4 + 1, -32768, -32769},     /* height within the bias limit (0.5 g) */
+        {4 + 2, 26214400, 26214401}, /* w <= 400 degC */
+        {4 + 3, 13107200, 13107201}, /* Tc <= 200 degC */
+        {4 + 6, 32768, 32769},       /* cubic coefficient within the bias limit */
+        {4 + 7, 0, 1},               /* first unused word */
+        {4 + 15, 0, -1},             /* last unused word */
     };
 
     fix_record(&r);
@@ -226,7 +231,9 @@ static void test_lorentz_cubic_kind(void)
     CHECK(fix_record_equal(&back, &r));
     r.valid = false;
     for (i = 0; i < sizeof cases / sizeof cases[0]; i++) {
-        int32_t *w = cases[i].word == 2 ? &m->t_ref : cases[i].word == 3 ? &m->t_span : &m->p[cases[i].word - 4];
+        int32_t *w = cases[i].word == 2   ? &m->t_ref
+                     : cases[i].word == 3 ? &m->t_span
+                                          : &m->p[cases[i].word - 4];
         const int32_t keep = *w;
         uint8_t bad[CALREC_IMAGE_SIZE];
         *w = cases[i].ok;
@@ -339,8 +346,14 @@ static void test_wrong_sensor(void)
         switch (field) {
         case 0: e.family = CALREC_FAMILY_ADIS1625X; break;
         case 1: e.product = 16365u; break;
-        case 2: e.family = CALREC_FAMILY_SCA3000; e.product = CALREC_SCA3000_D01; e.revision = 0x21u;
-                e.serial = 0; e.lot_id1 = 0; e.lot_id2 = 0; break;
+        case 2:
+            e.family = CALREC_FAMILY_SCA3000;
+            e.product = CALREC_SCA3000_D01;
+            e.revision = 0x21u;
+            e.serial = 0;
+            e.lot_id1 = 0;
+            e.lot_id2 = 0;
+            break;
         case 3: e.serial = 0x1235u; break;
         case 4: e.lot_id1 = 0xA5A4u; break;
         default: e.lot_id2 = 0x0043u; break;
@@ -406,7 +419,8 @@ static void test_every_bit_flip(void)
     for (byte = 0; byte < CALREC_IMAGE_SIZE; byte++) {
         /* A flipped version or length word is reported as a version problem (the header is
          * judged before the CRC); anything else, magic included, as corruption. */
-        int want = (byte >= CALREC_OFF_VERSION && byte < CALREC_OFF_SEQ) ? INC_ERR_VERSION : INC_ERR_CRC;
+        int want = (byte >= CALREC_OFF_VERSION && byte < CALREC_OFF_SEQ) ? INC_ERR_VERSION
+                                                                         : INC_ERR_CRC;
         for (bit = 0; bit < 8u; bit++) {
             int err;
             img[byte] ^= (uint8_t)(1u << bit);
@@ -415,7 +429,8 @@ static void test_every_bit_flip(void)
             not_default += !fix_record_is_default(&out) || seq != 0u;
             if (err != want) {
                 if (wrong_code++ < 4u) {
-                    unit_fail(__FILE__, __LINE__, "flip %u.%u gave %d, want %d", byte, bit, err, want);
+                    unit_fail(__FILE__, __LINE__, "flip %u.%u gave %d, want %d", byte, bit, err,
+                              want);
                 }
             }
             img[byte] ^= (uint8_t)(1u << bit);

@@ -73,8 +73,14 @@ static void test_save_load_alternates(const struct fix_geometry *g)
     }
 }
 
-static void test_save_load_8(void) { test_save_load_alternates(&g8); }
-static void test_save_load_1(void) { test_save_load_alternates(&g1); }
+static void test_save_load_8(void)
+{
+    test_save_load_alternates(&g8);
+}
+static void test_save_load_1(void)
+{
+    test_save_load_alternates(&g1);
+}
 
 /* Reads of a load and a save with both slots intact (the figures of docs/benchmarks.md):
  * judging an intact slot reads the header, the commit unit, the CRC-covered bytes (streamed),
@@ -104,8 +110,14 @@ static void test_steady_state_reads(const struct fix_geometry *g)
     CHECK_EQ_INT(st->prog_units, body / g->prog_size + (clen + g->prog_size - 1u) / g->prog_size);
 }
 
-static void test_reads_8(void) { test_steady_state_reads(&g8); }
-static void test_reads_1(void) { test_steady_state_reads(&g1); }
+static void test_reads_8(void)
+{
+    test_steady_state_reads(&g8);
+}
+static void test_reads_1(void)
+{
+    test_steady_state_reads(&g1);
+}
 
 /* Every single-bit flip in a stored record (image, padding-free area and commit unit). */
 static void test_corrupt_every_bit(void)
@@ -207,12 +219,18 @@ static void test_wrong_sensor(void)
         REQUIRE(calstore_save(&fs.store, &r, NULL) == INC_OK);
         fix_binding(&e);
         switch (field) {
-        case 0: e.product = 16362u; break;             /* another PROD_ID */
-        case 1: e.serial = 0x1233u; break;             /* same type, another unit */
+        case 0: e.product = 16362u; break; /* another PROD_ID */
+        case 1: e.serial = 0x1233u; break; /* same type, another unit */
         case 2: e.lot_id1 = 0x0001u; break;
         case 3: e.lot_id2 = 0x0001u; break;
-        default: e.family = CALREC_FAMILY_SCA3000; e.product = CALREC_SCA3000_E04; e.revision = 0x31u;
-                 e.serial = 0; e.lot_id1 = 0; e.lot_id2 = 0; break; /* other part, REVID */
+        default:
+            e.family = CALREC_FAMILY_SCA3000;
+            e.product = CALREC_SCA3000_E04;
+            e.revision = 0x31u;
+            e.serial = 0;
+            e.lot_id1 = 0;
+            e.lot_id2 = 0;
+            break; /* other part, REVID */
         }
         CHECK_ERR(calstore_load(&fs.store, &e, &out, &info), INC_ERR_MISMATCH);
         CHECK(fix_record_is_default(&out));
@@ -258,7 +276,7 @@ static void test_out_of_range(void)
     r.acc_gain[2] = -CALREC_Q30_ONE; /* +1 g and -1 g swapped */
     CHECK_ERR(calstore_save(&fs.store, &r, &info), INC_ERR_RANGE);
     CHECK_EQ_INT(info.used_slot, -1);
-    CHECK_EQ_INT(simflash_steps(&fs.flash), 0);        /* nothing written */
+    CHECK_EQ_INT(simflash_steps(&fs.flash), 0);                 /* nothing written */
     CHECK_EQ_INT(simflash_get_stats(&fs.flash)->read_calls, 0); /* not even looked */
     calrec_set_default(&r);
     CHECK_ERR(calstore_save(&fs.store, &r, &info), INC_ERR_INVAL); /* unbound default */
@@ -438,9 +456,28 @@ static void test_readback_verification(void)
     }
 }
 
-static int dummy_read(void *ctx, uint32_t a, uint8_t *b, uint32_t l) { (void)ctx; (void)a; (void)b; (void)l; return 0; }
-static int dummy_prog(void *ctx, uint32_t a, const uint8_t *b, uint32_t l) { (void)ctx; (void)a; (void)b; (void)l; return 0; }
-static int dummy_erase(void *ctx, uint32_t a) { (void)ctx; (void)a; return 0; }
+static int dummy_read(void *ctx, uint32_t a, uint8_t *b, uint32_t l)
+{
+    (void)ctx;
+    (void)a;
+    (void)b;
+    (void)l;
+    return 0;
+}
+static int dummy_prog(void *ctx, uint32_t a, const uint8_t *b, uint32_t l)
+{
+    (void)ctx;
+    (void)a;
+    (void)b;
+    (void)l;
+    return 0;
+}
+static int dummy_erase(void *ctx, uint32_t a)
+{
+    (void)ctx;
+    (void)a;
+    return 0;
+}
 
 static void test_init_arguments(void)
 {
@@ -462,28 +499,70 @@ static void test_init_arguments(void)
     CHECK_OK(calstore_init(&st, &base));
     CHECK_ERR(calstore_init(NULL, &base), INC_ERR_NULL);
     CHECK_ERR(calstore_init(&st, NULL), INC_ERR_NULL);
-    c = base; c.ops = NULL; CHECK_ERR(calstore_init(&st, &c), INC_ERR_NULL);
-    c = base; c.ops = &no_read; CHECK_ERR(calstore_init(&st, &c), INC_ERR_NULL);
-    c = base; c.ops = &no_prog; CHECK_ERR(calstore_init(&st, &c), INC_ERR_NULL);
-    c = base; c.ops = &no_erase; CHECK_ERR(calstore_init(&st, &c), INC_ERR_NULL);
-    c = base; c.erased_value = 0x00u; CHECK_ERR(calstore_init(&st, &c), INC_ERR_UNSUPPORTED);
-    c = base; c.prog_size = 0; CHECK_ERR(calstore_init(&st, &c), INC_ERR_INVAL);
-    c = base; c.prog_size = 12; CHECK_ERR(calstore_init(&st, &c), INC_ERR_INVAL);
-    c = base; c.prog_size = 64; CHECK_ERR(calstore_init(&st, &c), INC_ERR_INVAL);
-    c = base; c.page_size = 1020; c.slot_size = 2040; CHECK_ERR(calstore_init(&st, &c), INC_ERR_INVAL);
-    c = base; c.page_size = 0; CHECK_ERR(calstore_init(&st, &c), INC_ERR_INVAL);
-    c = base; c.page_size = 256; c.slot_size = 512; CHECK_ERR(calstore_init(&st, &c), INC_ERR_INVAL); /* < 664 */
-    c = base; c.slot_size = 1500; CHECK_ERR(calstore_init(&st, &c), INC_ERR_INVAL);
-    c = base; c.slot_addr[1] = 0x08007E00u; CHECK_ERR(calstore_init(&st, &c), INC_ERR_INVAL); /* unaligned */
-    c = base; c.slot_addr[1] = c.slot_addr[0]; CHECK_ERR(calstore_init(&st, &c), INC_ERR_INVAL);
-    c = base; c.slot_size = 2048; CHECK_ERR(calstore_init(&st, &c), INC_ERR_INVAL); /* overlap */
-    c = base; c.slot_addr[1] = 0xFFFFFC00u; c.slot_size = 2048; CHECK_ERR(calstore_init(&st, &c), INC_ERR_INVAL);
-    c = base; c.slot_size = CALSTORE_SLOT_MAX + 1024u; c.slot_addr[1] = 0x0A000000u; CHECK_ERR(calstore_init(&st, &c), INC_ERR_INVAL);
-    c = base; c.page_size = 256; c.slot_size = 768; c.slot_addr[1] = 0x08007B00u; CHECK_OK(calstore_init(&st, &c));
+    c = base;
+    c.ops = NULL;
+    CHECK_ERR(calstore_init(&st, &c), INC_ERR_NULL);
+    c = base;
+    c.ops = &no_read;
+    CHECK_ERR(calstore_init(&st, &c), INC_ERR_NULL);
+    c = base;
+    c.ops = &no_prog;
+    CHECK_ERR(calstore_init(&st, &c), INC_ERR_NULL);
+    c = base;
+    c.ops = &no_erase;
+    CHECK_ERR(calstore_init(&st, &c), INC_ERR_NULL);
+    c = base;
+    c.erased_value = 0x00u;
+    CHECK_ERR(calstore_init(&st, &c), INC_ERR_UNSUPPORTED);
+    c = base;
+    c.prog_size = 0;
+    CHECK_ERR(calstore_init(&st, &c), INC_ERR_INVAL);
+    c = base;
+    c.prog_size = 12;
+    CHECK_ERR(calstore_init(&st, &c), INC_ERR_INVAL);
+    c = base;
+    c.prog_size = 64;
+    CHECK_ERR(calstore_init(&st, &c), INC_ERR_INVAL);
+    c = base;
+    c.page_size = 1020;
+    c.slot_size = 2040;
+    CHECK_ERR(calstore_init(&st, &c), INC_ERR_INVAL);
+    c = base;
+    c.page_size = 0;
+    CHECK_ERR(calstore_init(&st, &c), INC_ERR_INVAL);
+    c = base;
+    c.page_size = 256;
+    c.slot_size = 512;
+    CHECK_ERR(calstore_init(&st, &c), INC_ERR_INVAL); /* < 664 */
+    c = base;
+    c.slot_size = 1500;
+    CHECK_ERR(calstore_init(&st, &c), INC_ERR_INVAL);
+    c = base;
+    c.slot_addr[1] = 0x08007E00u;
+    CHECK_ERR(calstore_init(&st, &c), INC_ERR_INVAL); /* unaligned */
+    c = base;
+    c.slot_addr[1] = c.slot_addr[0];
+    CHECK_ERR(calstore_init(&st, &c), INC_ERR_INVAL);
+    c = base;
+    c.slot_size = 2048;
+    CHECK_ERR(calstore_init(&st, &c), INC_ERR_INVAL); /* overlap */
+    c = base;
+    c.slot_addr[1] = 0xFFFFFC00u;
+    c.slot_size = 2048;
+    CHECK_ERR(calstore_init(&st, &c), INC_ERR_INVAL);
+    c = base;
+    c.slot_size = CALSTORE_SLOT_MAX + 1024u;
+    c.slot_addr[1] = 0x0A000000u;
+    CHECK_ERR(calstore_init(&st, &c), INC_ERR_INVAL);
+    c = base;
+    c.page_size = 256;
+    c.slot_size = 768;
+    c.slot_addr[1] = 0x08007B00u;
+    CHECK_OK(calstore_init(&st, &c));
 
     CHECK_EQ_INT(calstore_slot_min_size(8, 1024), 1024);
-    CHECK_EQ_INT(calstore_slot_min_size(1, 256), 768);   /* 656 + 4 = 660 -> 3 pages */
-    CHECK_EQ_INT(calstore_slot_min_size(32, 64), 704);   /* 672 + 32 */
+    CHECK_EQ_INT(calstore_slot_min_size(1, 256), 768); /* 656 + 4 = 660 -> 3 pages */
+    CHECK_EQ_INT(calstore_slot_min_size(32, 64), 704); /* 672 + 32 */
     CHECK_EQ_INT(calstore_slot_min_size(3, 64), 0);
 }
 

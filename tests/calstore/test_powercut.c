@@ -36,7 +36,7 @@ static const struct fix_geometry geometries[] = {
 
 static const struct fix_geometry *geo = &geometries[POWERCUT_GEOMETRY];
 static uint8_t mem[FIX_FLASH_MAX];
-static uint8_t before[FIX_FLASH_MAX];   /* flash image before the save under test */
+static uint8_t before[FIX_FLASH_MAX]; /* flash image before the save under test */
 static struct fix_store fs;
 static struct calrec recs[WRITES];
 
@@ -53,7 +53,7 @@ static void one_case(int k, uint32_t n, uint32_t steps, enum simflash_cut_mode m
 {
     struct calrec out, want;
     struct calstore_info info;
-    uint32_t keep_addr, old_seq = (uint32_t)k;   /* seq of recs[k-1] is k */
+    uint32_t keep_addr, old_seq = (uint32_t)k;    /* seq of recs[k-1] is k */
     unsigned kept_slot = (unsigned)((k + 1) % 2); /* recs[k-1] lives in slot (k-1)%2 */
     int err;
 
@@ -137,7 +137,8 @@ static void test_every_cut(void)
             one_case(k, n, steps_per_save[k], SIMFLASH_CUT_BEFORE, 1u);
             one_case(k, n, steps_per_save[k], SIMFLASH_CUT_AFTER, 1u);
             for (seed = 1; seed <= TORN_SEEDS; seed++) {
-                one_case(k, n, steps_per_save[k], SIMFLASH_CUT_TORN, n * 7919u + seed * 104729u + (uint32_t)k);
+                one_case(k, n, steps_per_save[k], SIMFLASH_CUT_TORN,
+                         n * 7919u + seed * 104729u + (uint32_t)k);
             }
         }
         /* Continue the sequence from the clean state after save k. */
@@ -191,7 +192,8 @@ static void test_double_cut(void)
             (void)calstore_save(&fs.store, &recs[2], NULL);
             simflash_power_on(&fs.flash);
             err = calstore_load(&fs.store, &recs[2].binding, &out, &info);
-            if (err != INC_OK || !(fix_record_equal(&out, &want_old) || fix_record_equal(&out, &want_new))) {
+            if (err != INC_OK ||
+                !(fix_record_equal(&out, &want_old) || fix_record_equal(&out, &want_new))) {
                 bad++;
             } else if (fix_record_equal(&out, &want_new) && n1 != steps && n2 != steps) {
                 bad++; /* new visible without any commit step */

@@ -69,7 +69,7 @@ static void test_program_semantics(void)
     memset(d, 0x00, 4);
     CHECK_ERR(simflash_program(&f, 8, d, 4), INC_ERR_IO);
     CHECK_OK(simflash_read(&f, 8, r, 4));
-    CHECK_EQ_HEX(r[0], 0x30u); /* unchanged */
+    CHECK_EQ_HEX(r[0], 0x30u);   /* unchanged */
     CHECK(simflash_powered(&f)); /* a refused program is not a power cut */
 
     /* Erase restores 0xFF over exactly one page. */
@@ -104,7 +104,8 @@ static void test_alignment_and_range(void)
 }
 
 /* Program 3 units of 0x00 at 0 with a cut on the 2nd step in the given mode. */
-static void cut_program(struct simflash *f, enum simflash_cut_mode mode, uint32_t seed, uint8_t r[12])
+static void cut_program(struct simflash *f, enum simflash_cut_mode mode, uint32_t seed,
+                        uint8_t r[12])
 {
     uint8_t d[12];
     memset(d, 0x00, sizeof d);
@@ -176,8 +177,8 @@ static void test_power_cut_program_on_data(void)
         CHECK_ERR(simflash_program(&f, 0, d, 4), INC_ERR_IO);
         CHECK_OK(simflash_peek(&f, 0, r, 4));
         for (i = 0; i < 4u; i++) {
-            CHECK_EQ_HEX(r[i] & (uint8_t)~first[i], 0u);             /* no bit set */
-            CHECK_EQ_HEX((first[i] & d[i]) & (uint8_t)~r[i], 0u);    /* kept bits kept */
+            CHECK_EQ_HEX(r[i] & (uint8_t)~first[i], 0u);          /* no bit set */
+            CHECK_EQ_HEX((first[i] & d[i]) & (uint8_t)~r[i], 0u); /* kept bits kept */
         }
     }
 }

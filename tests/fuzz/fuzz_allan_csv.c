@@ -56,7 +56,8 @@ static void ref_get_line(const char *text, size_t len, size_t l, struct ref_line
     if (e > s && text[e - 1] == '\n') e--;
     out->nul = false;
     out->too_long = e - s > SIM_ALLAN_CSV_LINE_MAX;
-    for (i = s; i < e; i++) out->nul = out->nul || text[i] == '\0';
+    for (i = s; i < e; i++)
+        out->nul = out->nul || text[i] == '\0';
     out->len = out->too_long ? 0 : e - s;
     memcpy(out->text, text + s, out->len);
     while (out->len > 0 && (out->text[out->len - 1] == ' ' || out->text[out->len - 1] == '\t' ||
@@ -68,7 +69,8 @@ static void ref_get_line(const char *text, size_t len, size_t l, struct ref_line
 
 static bool ref_skip(const char *s)
 {
-    while (*s != '\0' && isspace((unsigned char)*s)) s++;
+    while (*s != '\0' && isspace((unsigned char)*s))
+        s++;
     return *s == '\0' || *s == '#';
 }
 
@@ -79,13 +81,16 @@ static size_t ref_fields(const char *s, size_t *fs, size_t *fl)
     size_t n = 0, p = 0;
     for (;;) {
         size_t st;
-        while (s[p] == ' ' || s[p] == '\t') p++;
+        while (s[p] == ' ' || s[p] == '\t')
+            p++;
         if (s[p] == '\0' || n == REF_MAX_FIELDS) return n;
         st = p;
-        while (s[p] != '\0' && strchr(",; \t", s[p]) == NULL) p++;
+        while (s[p] != '\0' && strchr(",; \t", s[p]) == NULL)
+            p++;
         fs[n] = st;
         fl[n++] = p - st;
-        while (s[p] == ' ' || s[p] == '\t') p++;
+        while (s[p] == ' ' || s[p] == '\t')
+            p++;
         if (s[p] == ',' || s[p] == ';') p++;
     }
 }
@@ -136,12 +141,14 @@ static void ref_read(const char *text, size_t len, const struct seed_opts *o, st
         if (first) {
             size_t names = 0, k;
             first = false;
-            for (k = 0; k < nf; k++) names += ref_number(ln.text + fs[k], fl[k], &v) < 0 && fl[k] > 0;
+            for (k = 0; k < nf; k++)
+                names += ref_number(ln.text + fs[k], fl[k], &v) < 0 && fl[k] > 0;
             if (names == nf) continue; /* the header */
         }
         if (o->col >= nf || ref_number(ln.text + fs[o->col], fl[o->col], &v) != 1 ||
-            (o->time_col >= 0 && ((size_t)o->time_col >= nf ||
-                                  ref_number(ln.text + fs[o->time_col], fl[o->time_col], &t) != 1)) ||
+            (o->time_col >= 0 &&
+             ((size_t)o->time_col >= nf ||
+              ref_number(ln.text + fs[o->time_col], fl[o->time_col], &t) != 1)) ||
             !isfinite(v * o->scale)) {
             r->bad_line = l;
             return;
@@ -205,7 +212,8 @@ static bool seed_is_data_line(const struct seed_info *si, size_t l)
 
 /* The line (1-based) of offset pos, and the index of the field that holds or starts at pos
  * (SIZE_MAX between fields); *fstart / *fend: that field's offsets in the seed. */
-static size_t seed_field_at(const struct seed_info *si, size_t pos, size_t *field, size_t *fstart, size_t *fend)
+static size_t seed_field_at(const struct seed_info *si, size_t pos, size_t *field, size_t *fstart,
+                            size_t *fend)
 {
     static struct ref_line ln;
     size_t l = 1, s = 0, i, nf, fs[REF_MAX_FIELDS], fl[REF_MAX_FIELDS];
@@ -235,9 +243,11 @@ static bool is_read(const struct seed_opts *o, size_t field)
 
 /* 0: not certainly broken; else the line the refusal must name, or SIZE_MAX (refused, line not
  * pinned by the mutation alone). */
-static size_t must_fail(const struct seed_info *si, const struct seed_opts *o, const struct fuzz_case *c)
+static size_t must_fail(const struct seed_info *si, const struct seed_opts *o,
+                        const struct fuzz_case *c)
 {
-    const size_t last_read = o->time_col >= 0 && (size_t)o->time_col > o->col ? (size_t)o->time_col : o->col;
+    const size_t last_read = o->time_col >= 0 && (size_t)o->time_col > o->col ? (size_t)o->time_col
+                                                                              : o->col;
     size_t f, fs, fe, l, e;
     switch (c->family) {
     case FUZZ_BYTE: {
@@ -245,7 +255,10 @@ static size_t must_fail(const struct seed_info *si, const struct seed_opts *o, c
         if ((unsigned char)si->seed[c->where] == b) return 0;
         l = seed_field_at(si, c->where, &f, &fs, &fe);
         if (b == 0u) return l; /* a NUL anywhere */
-        return (b == 0xFFu || b == 'n') && seed_is_data_line(si, l) && f != SIZE_MAX && is_read(o, f) ? l : 0;
+        return (b == 0xFFu || b == 'n') && seed_is_data_line(si, l) && f != SIZE_MAX &&
+                       is_read(o, f)
+                   ? l
+                   : 0;
     }
     case FUZZ_TRUNC: {
         size_t ls;
@@ -254,7 +267,8 @@ static size_t must_fail(const struct seed_info *si, const struct seed_opts *o, c
         l = seed_field_at(si, c->where - 1u, &f, &fs, &fe);
         if (!seed_is_data_line(si, l)) return 0;
         ls = fuzz_line_span(si->seed, si->len, l - 1u, &e);
-        for (size_t p = ls; p < c->where; p++) content = content || !isspace((unsigned char)si->seed[p]);
+        for (size_t p = ls; p < c->where; p++)
+            content = content || !isspace((unsigned char)si->seed[p]);
         if (!content) return 0; /* only blanks left: a blank line */
         /* the last read field gone or cut to nothing */
         {
@@ -266,7 +280,8 @@ static size_t must_fail(const struct seed_info *si, const struct seed_opts *o, c
             if (c->where <= p) return l;
         }
         /* a number cut after its sign or its exponent letter */
-        if (f != SIZE_MAX && is_read(o, f) && strchr("eE+-", si->seed[c->where - 1u]) != NULL) return l;
+        if (f != SIZE_MAX && is_read(o, f) && strchr("eE+-", si->seed[c->where - 1u]) != NULL)
+            return l;
         return 0;
     }
     case FUZZ_TOKEN: {
@@ -274,7 +289,9 @@ static size_t must_fail(const struct seed_info *si, const struct seed_opts *o, c
         double nv;
         l = seed_field_at(si, c->where, &f, &fs, &fe);
         if (!seed_is_data_line(si, l) || f == SIZE_MAX || !is_read(o, f)) return 0;
-        if (strcmp(t, "nan") == 0 || strcmp(t, "inf") == 0 || strcmp(t, "-inf") == 0 || t[0] == '\0') return l;
+        if (strcmp(t, "nan") == 0 || strcmp(t, "inf") == 0 || strcmp(t, "-inf") == 0 ||
+            t[0] == '\0')
+            return l;
         nv = strtod(t, NULL);
         if (f == o->col && !isfinite(nv * o->scale)) return l;
         if (o->time_col >= 0 && f == (size_t)o->time_col) {
@@ -293,10 +310,8 @@ static size_t must_fail(const struct seed_info *si, const struct seed_opts *o, c
         for (l = c->where + 2u; !seed_is_data_line(si, l); l++) {
         }
         return l - 1u;
-    case FUZZ_LONG:
-        return c->where + 1u;
-    default:
-        return 0;
+    case FUZZ_LONG: return c->where + 1u;
+    default: return 0;
     }
 }
 
@@ -304,8 +319,8 @@ static size_t must_fail(const struct seed_info *si, const struct seed_opts *o, c
 
 static unsigned n_cases, n_ok, n_must, n_pinned;
 
-static int read_buf(const char *d, size_t len, const struct seed_opts *o, double **y, size_t *n, double *dt,
-                    size_t *bad)
+static int read_buf(const char *d, size_t len, const struct seed_opts *o, double **y, size_t *n,
+                    double *dt, size_t *bad)
 {
     FILE *f = len ? fmemopen((void *)(uintptr_t)d, len, "r") : tmpfile();
     int err;
@@ -315,26 +330,27 @@ static int read_buf(const char *d, size_t len, const struct seed_opts *o, double
     return err;
 }
 
-static void case_fail(int line, const struct seed_opts *o, unsigned long k, const struct fuzz_case *c,
-                      const char *fmt, ...)
+static void case_fail(int line, const struct seed_opts *o, unsigned long k,
+                      const struct fuzz_case *c, const char *fmt, ...)
 #if defined(__GNUC__)
     __attribute__((format(printf, 5, 6)))
 #endif
     ;
-static void case_fail(int line, const struct seed_opts *o, unsigned long k, const struct fuzz_case *c,
-                      const char *fmt, ...)
+static void case_fail(int line, const struct seed_opts *o, unsigned long k,
+                      const struct fuzz_case *c, const char *fmt, ...)
 {
     char what[400];
     va_list ap;
     va_start(ap, fmt);
     vsnprintf(what, sizeof what, fmt, ap);
     va_end(ap);
-    unit_fail(__FILE__, line, "%s case %lu (%s at %zu, arg %u): %s", o->label, k, fuzz_family_name(c->family),
-              c->where, c->arg, what);
+    unit_fail(__FILE__, line, "%s case %lu (%s at %zu, arg %u): %s", o->label, k,
+              fuzz_family_name(c->family), c->where, c->arg, what);
 }
 #define FAILC(...) case_fail(__LINE__, o, k, c, __VA_ARGS__)
 
-static void check_case(const struct seed_info *si, const struct seed_opts *o, unsigned long k, const struct fuzz_case *c)
+static void check_case(const struct seed_info *si, const struct seed_opts *o, unsigned long k,
+                       const struct fuzz_case *c)
 {
     struct ref_result ref;
     static double sentinel;
@@ -345,9 +361,11 @@ static void check_case(const struct seed_info *si, const struct seed_opts *o, un
     n_cases++;
     unit_checks++;
     if (err == INC_OK) {
-        bool same = ref.ok && n == ref.n && y != NULL && (o->time_col < 0 ? dt == -7.0 : dt == ref.dt);
+        bool same = ref.ok && n == ref.n && y != NULL &&
+                    (o->time_col < 0 ? dt == -7.0 : dt == ref.dt);
         n_ok++;
-        for (size_t i = 0; same && i < n; i++) same = y[i] == ref.y[i] && isfinite(y[i]);
+        for (size_t i = 0; same && i < n; i++)
+            same = y[i] == ref.y[i] && isfinite(y[i]);
         if (o->time_col >= 0 && same) same = isfinite(dt) && dt > 0.0;
         if (!same) {
             FAILC("accepted (%zu samples, dt %g); the reference %s (%zu samples, line %zu)", n, dt,
@@ -355,8 +373,8 @@ static void check_case(const struct seed_info *si, const struct seed_opts *o, un
         }
         free(y);
     } else if (err != INC_ERR_FORMAT || y != NULL || n != 0 || ref.ok || bad != ref.bad_line) {
-        FAILC("error %d, line %zu, y %s; the reference %s at line %zu", err, bad, y == NULL ? "NULL" : "set",
-              ref.ok ? "accepts" : "refuses", ref.bad_line);
+        FAILC("error %d, line %zu, y %s; the reference %s at line %zu", err, bad,
+              y == NULL ? "NULL" : "set", ref.ok ? "accepts" : "refuses", ref.bad_line);
     }
     want = must_fail(si, o, c);
     if (want != 0) {
@@ -393,7 +411,8 @@ static void sweep(const struct seed_opts *o, const char *seed, size_t len)
     si.last_data = ref.line[n - 1u];
     si.data_rows = n;
     si.step = o->time_col >= 0 ? dt : 0.0;
-    for (l = 0; l < n; l++) CHECK(y[l] == ref.y[l]);
+    for (l = 0; l < n; l++)
+        CHECK(y[l] == ref.y[l]);
     ref_free(&ref);
     free(y);
     for (k = 0; fuzz_mutate(seed, len, k, stride, UNIT_SIZE(400u, 80u), &c) != FUZZ_END; k++) {
@@ -408,30 +427,33 @@ static void test_sweep(void)
     static const struct seed_opts o_comma = {"comma 100 Hz", 1, 0, 1.0};
     static const struct seed_opts o_semi = {"semicolon time last", 0, 2, -0.5};
     static const struct seed_opts o_blank = {"blanks no time", 1, -1, 1.0};
-    static const char example[] = "# gyro log\ntime_s,gyro_x,gyro_y\n0.0,1.5,9\n0.5,-2.0,9\n\n1.0,0.25,9\n";
+    static const char example[] =
+        "# gyro log\ntime_s,gyro_x,gyro_y\n0.0,1.5,9\n0.5,-2.0,9\n\n1.0,0.25,9\n";
     static char comma[4096], semi[4096], blank[4096];
     size_t nc = 0, ns = 0, nb = 0;
     unsigned i;
     nc += (size_t)snprintf(comma, sizeof comma, "time_s,rate_dps,temp_c\n");
     for (i = 0; i < 40u; i++) {
-        nc += (size_t)snprintf(comma + nc, sizeof comma - nc, "%s%.2f,%.4g,%d.%u\n", i == 20u ? "# restart\n\n" : "",
-                               0.01 * i, (i % 3u ? 1.0 : -1.0) * (0.01 + 0.0137 * i) * (i % 7u ? 1.0 : 1e-3),
+        nc += (size_t)snprintf(comma + nc, sizeof comma - nc, "%s%.2f,%.4g,%d.%u\n",
+                               i == 20u ? "# restart\n\n" : "", 0.01 * i,
+                               (i % 3u ? 1.0 : -1.0) * (0.01 + 0.0137 * i) * (i % 7u ? 1.0 : 1e-3),
                                20 + (int)(i % 4u), i % 10u);
     }
     for (i = 0; i < 30u; i++) {
-        ns += (size_t)snprintf(semi + ns, sizeof semi - ns, "%.3e;%d;%.1f\n", (i % 2u ? -1.0 : 1.0) * 0.25 * (i + 1u),
-                               (int)i - 15, 100.0 + 0.5 * i);
+        ns += (size_t)snprintf(semi + ns, sizeof semi - ns, "%.3e;%d;%.1f\n",
+                               (i % 2u ? -1.0 : 1.0) * 0.25 * (i + 1u), (int)i - 15,
+                               100.0 + 0.5 * i);
     }
     for (i = 0; i < 30u; i++) {
-        nb += (size_t)snprintf(blank + nb, sizeof blank - nb, "%s%u%s%+.3f\n", i % 4u ? "" : "  ", i,
-                               i % 3u ? "\t" : "   ", 0.125 * ((int)i - 11));
+        nb += (size_t)snprintf(blank + nb, sizeof blank - nb, "%s%u%s%+.3f\n", i % 4u ? "" : "  ",
+                               i, i % 3u ? "\t" : "   ", 0.125 * ((int)i - 11));
     }
     sweep(&o_example, example, sizeof example - 1u);
     sweep(&o_comma, comma, nc);
     sweep(&o_semi, semi, ns);
     sweep(&o_blank, blank, nb);
-    printf("allan csv: %u cases, %u accepted, %u that must be refused (%u at a pinned line)\n", n_cases, n_ok,
-           n_must, n_pinned);
+    printf("allan csv: %u cases, %u accepted, %u that must be refused (%u at a pinned line)\n",
+           n_cases, n_ok, n_must, n_pinned);
     CHECK(n_cases > UNIT_SIZE(20000u, 9000u));
     CHECK(n_must > n_cases / 10u);
     CHECK(n_ok > n_cases / 10u);
@@ -449,13 +471,21 @@ static void test_regressions(void)
         size_t line;
     } cases[] = {
         /* a NUL in the unterminated last line: read as "2,3" */
-        {"nul-last-line", "0,1\n1,2\n2,3\0" "9", 13, {"", 1, 0, 1.0}, 3},
+        {"nul-last-line",
+         "0,1\n1,2\n2,3\0"
+         "9",
+         13,
+         {"", 1, 0, 1.0},
+         3},
         /* a '\r' inside a line ended it: read as 1 */
         {"cr-mid-line", "0,1\r5\n1,2\n2,3\n", 0, {"", 1, 0, 1.0}, 1},
         /* the first row's value NaN or garbled: taken for a header and dropped */
         {"nan-first-row", "0,nan\n1,2\n2,3\n", 0, {"", 1, 0, 1.0}, 1},
-        {"garbled-first-row", "2..00e-01;-15;100.0\n-5.000e-01;-14;100.5\n7.500e-01;-13;101.0\n", 0,
-         {"", 0, 2, -0.5}, 1},
+        {"garbled-first-row",
+         "2..00e-01;-15;100.0\n-5.000e-01;-14;100.5\n7.500e-01;-13;101.0\n",
+         0,
+         {"", 0, 2, -0.5},
+         1},
         /* 1e308 x scale 2 stored as infinity */
         {"scale-overflow", "0,1e308\n1,1\n2,1\n", 0, {"", 1, 0, 2.0}, 1},
         /* the time span overflows: dt = inf passed (inf - inf is NaN, NaN > x is false) */
@@ -472,12 +502,14 @@ static void test_regressions(void)
         CHECK_ERR(read_buf(cases[i].text, len, &cases[i].o, &y, &n, &dt, &bad), INC_ERR_FORMAT);
         unit_checks++;
         if (bad != cases[i].line || y != NULL || n != 0u) {
-            unit_fail(__FILE__, __LINE__, "%s: line %zu, want %zu", cases[i].name, bad, cases[i].line);
+            unit_fail(__FILE__, __LINE__, "%s: line %zu, want %zu", cases[i].name, bad,
+                      cases[i].line);
         }
     }
     /* the documented accepted forms still pass: header, CRLF, ';', a text column not read */
     {
-        static const char ok[] = "t;x;status\r\n0;1.5;OK\r\n# pause\r\n0.5;-2;OK\r\n1;4e-3;late\r\n";
+        static const char ok[] =
+            "t;x;status\r\n0;1.5;OK\r\n# pause\r\n0.5;-2;OK\r\n1;4e-3;late\r\n";
         static const struct seed_opts o = {"", 1, 0, 2.0};
         double *y = NULL, dt = 0.0;
         size_t n = 0, bad = 0;

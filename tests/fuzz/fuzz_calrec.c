@@ -74,7 +74,8 @@ static void test_image_file(void)
             err = calrec_decode(img, sizeof img, &b, &out, &seq);
             want = (i >= CALREC_OFF_VERSION && i < CALREC_OFF_SEQ) ? INC_ERR_VERSION : INC_ERR_CRC;
             if (err != want) {
-                unit_fail(__FILE__, __LINE__, "byte %zu := 0x%02X gave %d, want %d", i, fuzz_bytes[v], err, want);
+                unit_fail(__FILE__, __LINE__, "byte %zu := 0x%02X gave %d, want %d", i,
+                          fuzz_bytes[v], err, want);
             }
             unit_checks++;
             CHECK(is_default(&out));

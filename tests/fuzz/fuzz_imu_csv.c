@@ -33,7 +33,8 @@ static bool get_line(const char *text, size_t len, long line, char *buf, size_t 
     bool nul = false;
     if (e > s && text[e - 1] == '\n') e--;
     n = e - s < cap - 1u ? e - s : cap - 1u;
-    for (size_t i = s; i < e; i++) nul = nul || text[i] == '\0';
+    for (size_t i = s; i < e; i++)
+        nul = nul || text[i] == '\0';
     memcpy(buf, text + s, n);
     buf[n] = '\0';
     return !nul;
@@ -42,9 +43,11 @@ static bool get_line(const char *text, size_t len, long line, char *buf, size_t 
 static char *trim(char *s)
 {
     char *e;
-    while (*s == ' ' || *s == '\t') s++;
+    while (*s == ' ' || *s == '\t')
+        s++;
     e = s + strlen(s);
-    while (e > s && (e[-1] == ' ' || e[-1] == '\t' || e[-1] == '\r')) e--;
+    while (e > s && (e[-1] == ' ' || e[-1] == '\t' || e[-1] == '\r'))
+        e--;
     *e = '\0';
     return s;
 }
@@ -90,8 +93,10 @@ static bool on_data_row(const char *seed, size_t len, size_t pos, size_t *start,
     size_t s = pos, e = pos;
     char *t, *c;
     double d;
-    while (s > 0 && seed[s - 1] != '\n') s--;
-    while (e < len && seed[e] != '\n') e++;
+    while (s > 0 && seed[s - 1] != '\n')
+        s--;
+    while (e < len && seed[e] != '\n')
+        e++;
     *start = s;
     *last_comma = s;
     for (size_t i = s; i < e; i++) {
@@ -117,12 +122,14 @@ static bool must_fail(const char *seed, size_t len, const struct fuzz_case *c)
         return (b == 0u || b == 0xFFu || b == 'n') && on_data_row(seed, len, c->where, &start, &lc);
     }
     case FUZZ_TRUNC:
-        return c->where > 0 && on_data_row(seed, len, c->where - 1u, &start, &lc) && c->where <= lc + 1u &&
-               seed[c->where - 1u] != '\n';
+        return c->where > 0 && on_data_row(seed, len, c->where - 1u, &start, &lc) &&
+               c->where <= lc + 1u && seed[c->where - 1u] != '\n';
     case FUZZ_TOKEN: {
         const char *t = fuzz_tokens[c->arg];
         if (!on_data_row(seed, len, c->where, &start, &lc)) return false;
-        if (strcmp(t, "nan") == 0 || strcmp(t, "inf") == 0 || strcmp(t, "-inf") == 0 || t[0] == '\0') return true;
+        if (strcmp(t, "nan") == 0 || strcmp(t, "inf") == 0 || strcmp(t, "-inf") == 0 ||
+            t[0] == '\0')
+            return true;
         /* a negative time */
         return c->where == start && t[0] == '-' && strcmp(t, "-0") != 0;
     }
@@ -131,10 +138,8 @@ static bool must_fail(const char *seed, size_t len, const struct fuzz_case *c)
         const size_t s = fuzz_line_span(seed, len, c->where, &e);
         return s < len && on_data_row(seed, len, s, &start, &lc);
     }
-    case FUZZ_LONG:
-        return true;
-    default:
-        return false;
+    case FUZZ_LONG: return true;
+    default: return false;
     }
 }
 
@@ -169,17 +174,21 @@ static void check_table(const char *label, unsigned long k, const struct fuzz_ca
             double v;
             ok = whole_number(fields[j], &v) && v == r->v[j];
         }
-        ok = ok && r->v[0] >= 0.0 && r->v[0] <= IMU_CSV_TIME_MAX_S && (i == 0 || r->v[0] > t->rows[i - 1].v[0]);
+        ok = ok && r->v[0] >= 0.0 && r->v[0] <= IMU_CSV_TIME_MAX_S &&
+             (i == 0 || r->v[0] > t->rows[i - 1].v[0]);
         if (!ok) {
-            unit_fail(__FILE__, __LINE__, "%s case %lu (%s at %zu, arg %u): row %zu (line %ld) does not match "
-                      "its line", label, k, fuzz_family_name(c->family), c->where, c->arg, i, r->line);
+            unit_fail(__FILE__, __LINE__,
+                      "%s case %lu (%s at %zu, arg %u): row %zu (line %ld) does not match "
+                      "its line",
+                      label, k, fuzz_family_name(c->family), c->where, c->arg, i, r->line);
             return;
         }
     }
     unit_checks++;
     if (!ok) {
-        unit_fail(__FILE__, __LINE__, "%s case %lu (%s at %zu, arg %u): %zu rows of %d columns, %zu data lines",
-                  label, k, fuzz_family_name(c->family), c->where, c->arg, t->n, t->cols, want_rows);
+        unit_fail(__FILE__, __LINE__,
+                  "%s case %lu (%s at %zu, arg %u): %zu rows of %d columns, %zu data lines", label,
+                  k, fuzz_family_name(c->family), c->where, c->arg, t->n, t->cols, want_rows);
     }
 }
 
@@ -214,7 +223,8 @@ static void sweep(const char *label, const char *seed, size_t len)
             unit_checks++;
             if (err != INC_ERR_FORMAT || t.rows != NULL || t.n != 0 ||
                 (strstr(msg, "in.csv line ") == NULL && strstr(msg, "data rows") == NULL)) {
-                unit_fail(__FILE__, __LINE__, "%s case %lu (%s at %zu, arg %u): error %d, message '%s'", label, k,
+                unit_fail(__FILE__, __LINE__,
+                          "%s case %lu (%s at %zu, arg %u): error %d, message '%s'", label, k,
                           fuzz_family_name(c.family), c.where, c.arg, err, msg);
             }
         }
@@ -222,8 +232,10 @@ static void sweep(const char *label, const char *seed, size_t len)
             n_must++;
             unit_checks++;
             if (err == INC_OK) {
-                unit_fail(__FILE__, __LINE__, "%s case %lu (%s at %zu, arg %u): a certainly broken file was "
-                          "accepted", label, k, fuzz_family_name(c.family), c.where, c.arg);
+                unit_fail(__FILE__, __LINE__,
+                          "%s case %lu (%s at %zu, arg %u): a certainly broken file was "
+                          "accepted",
+                          label, k, fuzz_family_name(c.family), c.where, c.arg);
             }
         }
         imu_csv_free(&t);
@@ -240,13 +252,15 @@ static void test_sweep(void)
     static char plain[4096];
     size_t pn = 0;
     REQUIRE(ex != NULL && gap != NULL);
-    while (cut < len && lines < 40u) lines += ex[cut++] == '\n';
+    while (cut < len && lines < 40u)
+        lines += ex[cut++] == '\n';
     sweep("example_adis16405.csv[1..40]", ex, cut);
     sweep("gap.csv", gap, glen);
     /* 7 columns, no header, blank and comment lines between rows */
     for (i = 0; i < 30u; i++) {
-        pn += (size_t)snprintf(plain + pn, sizeof plain - pn, "%s%.3f,%d.5,-0.25,0,%.4f,0.01,0.99\n",
-                               i == 10 ? "\n# note\n" : "", 1.5 + 0.01 * i, (int)i - 15, 0.1 - 0.001 * i);
+        pn += (size_t)snprintf(plain + pn, sizeof plain - pn,
+                               "%s%.3f,%d.5,-0.25,0,%.4f,0.01,0.99\n", i == 10 ? "\n# note\n" : "",
+                               1.5 + 0.01 * i, (int)i - 15, 0.1 - 0.001 * i);
     }
     sweep("plain7", plain, pn);
     free(ex);
@@ -266,13 +280,17 @@ static void test_regressions(void)
         const char *msg;
     } cases[] = {
         /* a NUL in the last line (no newline): read as 0.99 */
-        {"0,0,0,0,0,0,1\n0.01,0,0,0,0,0,0.99\0" "5", 36, "line 2: NUL byte"},
+        {"0,0,0,0,0,0,1\n0.01,0,0,0,0,0,0.99\0"
+         "5",
+         36, "line 2: NUL byte"},
         /* negative time: undefined behaviour in the tool's conversion to uint64 ns */
         {"-0.02,0,0,0,0,0,1\n-0.01,0,0,0,0,0,1\n", 0, "line 1: time -0.02 s outside"},
         {"1e308,0,0,0,0,0,1\n2e308,0,0,0,0,0,1\n", 0, "line 1: time 1e+308 s outside"},
         /* the first row's time empty or garbled: taken for a header and dropped */
-        {",0,0,0,0,0,1\n0.01,0,0,0,0,0,1\n0.02,0,0,0,0,0,1\n", 0, "line 1: field 1 (time) '' is not a number"},
-        {"n.5,0,0,0,0,0,1\n0.01,0,0,0,0,0,1\n0.02,0,0,0,0,0,1\n", 0, "line 1: field 1 (time) 'n.5' is not a number"},
+        {",0,0,0,0,0,1\n0.01,0,0,0,0,0,1\n0.02,0,0,0,0,0,1\n", 0,
+         "line 1: field 1 (time) '' is not a number"},
+        {"n.5,0,0,0,0,0,1\n0.01,0,0,0,0,0,1\n0.02,0,0,0,0,0,1\n", 0,
+         "line 1: field 1 (time) 'n.5' is not a number"},
     };
     unsigned i;
     for (i = 0; i < sizeof cases / sizeof cases[0]; i++) {
@@ -288,7 +306,8 @@ static void test_regressions(void)
     }
     /* and the documented accepted forms still pass: header, CRLF, 8 columns */
     {
-        static const char ok[] = "t,gx,gy,gz,ax,ay,az,temp\r\n0,0,0,0,0,0,1,25\r\n0.01,0,0,0,0,0,1,25.5\r\n";
+        static const char ok[] =
+            "t,gx,gy,gz,ax,ay,az,temp\r\n0,0,0,0,0,0,1,25\r\n0.01,0,0,0,0,0,1,25.5\r\n";
         struct imu_csv_table t;
         char msg[600];
         REQUIRE(read_buf(ok, sizeof ok - 1u, &t, msg, sizeof msg) == INC_OK);

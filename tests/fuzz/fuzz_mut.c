@@ -7,10 +7,23 @@
 
 #include "unit.h"
 
-const unsigned char fuzz_bytes[FUZZ_N_BYTES] = {0x00, '\n', ',', '-', '9', 0xFF, ' ', '.', 'e', 'n'};
+const unsigned char fuzz_bytes[FUZZ_N_BYTES] = {0x00, '\n', ',', '-', '9',
+                                                0xFF, ' ',  '.', 'e', 'n'};
 const char *const fuzz_tokens[FUZZ_N_TOKENS] = {
-    "1e308", "-1e308", "99999999999999999999", "-2147483649", "18446744073709551616", "nan",
-    "inf", "-inf", "", "-0", "0x10", "010", "1e-400", "+5",
+    "1e308",
+    "-1e308",
+    "99999999999999999999",
+    "-2147483649",
+    "18446744073709551616",
+    "nan",
+    "inf",
+    "-inf",
+    "",
+    "-0",
+    "0x10",
+    "010",
+    "1e-400",
+    "+5",
 };
 
 #define FUZZ_LONG_RUN 5000u
@@ -22,7 +35,8 @@ static int tok_char(char c)
 }
 
 /* The t-th number token (every stride-th one); returns its start, *tlen its length; len if none. */
-static size_t nth_token(const char *s, size_t len, size_t t, size_t stride, size_t *tlen, size_t *count)
+static size_t nth_token(const char *s, size_t len, size_t t, size_t stride, size_t *tlen,
+                        size_t *count)
 {
     size_t i = 0, found = 0, res = len;
     while (i < len) {
@@ -51,7 +65,8 @@ static size_t nth_token(const char *s, size_t len, size_t t, size_t stride, size
 size_t fuzz_count_lines(const char *text, size_t len)
 {
     size_t i, n = 0;
-    for (i = 0; i < len; i++) n += text[i] == '\n';
+    for (i = 0; i < len; i++)
+        n += text[i] == '\n';
     return n + (len > 0 && text[len - 1] != '\n');
 }
 
@@ -63,13 +78,14 @@ size_t fuzz_line_span(const char *text, size_t len, size_t line, size_t *end)
     }
     start = l == line ? i : len;
     i = start;
-    while (i < len && text[i] != '\n') i++;
+    while (i < len && text[i] != '\n')
+        i++;
     *end = i < len ? i + 1 : len;
     return start;
 }
 
-static void put(struct fuzz_case *c, const char *a, size_t na, const char *b, size_t nb, const char *d,
-                size_t nd)
+static void put(struct fuzz_case *c, const char *a, size_t na, const char *b, size_t nb,
+                const char *d, size_t nd)
 {
     free(c->data);
     c->data = malloc(na + nb + nd + 1u);
@@ -151,7 +167,8 @@ enum fuzz_family fuzz_mutate(const char *seed, size_t len, unsigned long k, size
     k -= 2u * lines;
     if (k == 0) {
         size_t i, o = 0, nl = 0;
-        for (i = 0; i < len; i++) nl += seed[i] == '\n';
+        for (i = 0; i < len; i++)
+            nl += seed[i] == '\n';
         put(out, "", 0, "", 0, "", 0);
         free(out->data);
         out->data = malloc(len + nl + 1u);
@@ -208,8 +225,8 @@ void fuzz_case_free(struct fuzz_case *c)
 
 const char *fuzz_family_name(enum fuzz_family f)
 {
-    static const char *const names[] = {"end",   "trunc", "byte", "delline", "dupline", "token",
-                                        "extra", "crlf",  "noeol", "long",   "random"};
+    static const char *const names[] = {"end",   "trunc", "byte",  "delline", "dupline", "token",
+                                        "extra", "crlf",  "noeol", "long",    "random"};
     return (unsigned)f < sizeof names / sizeof names[0] ? names[f] : "?";
 }
 

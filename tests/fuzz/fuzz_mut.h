@@ -49,11 +49,11 @@ extern const unsigned char fuzz_bytes[FUZZ_N_BYTES];
 extern const char *const fuzz_tokens[FUZZ_N_TOKENS];
 
 struct fuzz_case {
-    char *data;             /* malloc'd, NUL-terminated for convenience (len excludes it) */
+    char *data; /* malloc'd, NUL-terminated for convenience (len excludes it) */
     size_t len;
     enum fuzz_family family;
-    size_t where;           /* byte offset (TRUNC, BYTE, TOKEN start, LONG) or line index */
-    unsigned arg;           /* index into fuzz_bytes / fuzz_tokens, or the random case number */
+    size_t where; /* byte offset (TRUNC, BYTE, TOKEN start, LONG) or line index */
+    unsigned arg; /* index into fuzz_bytes / fuzz_tokens, or the random case number */
 };
 
 /*

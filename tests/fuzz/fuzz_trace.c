@@ -53,13 +53,15 @@ static int ref_blank(char c)
 }
 
 /* At least one blank, then key, then decimal digits (no sign) <= max. */
-static const char *ref_num(const char *p, const char *key, unsigned long long max, unsigned long long *out)
+static const char *ref_num(const char *p, const char *key, unsigned long long max,
+                           unsigned long long *out)
 {
     unsigned long long v = 0;
     const size_t kl = strlen(key);
     int digits = 0;
     if (!ref_blank(*p)) return NULL;
-    while (ref_blank(*p)) p++;
+    while (ref_blank(*p))
+        p++;
     if (strncmp(p, key, kl) != 0) return NULL;
     p += kl;
     while (*p >= '0' && *p <= '9') {
@@ -82,12 +84,14 @@ static int hexval(char c)
     return -1;
 }
 
-static const char *ref_words(const char *p, const char *key, unsigned bits, uint16_t *w, unsigned *n)
+static const char *ref_words(const char *p, const char *key, unsigned bits, uint16_t *w,
+                             unsigned *n)
 {
     const size_t kl = strlen(key);
     unsigned k = 0;
     if (!ref_blank(*p)) return NULL;
-    while (ref_blank(*p)) p++;
+    while (ref_blank(*p))
+        p++;
     if (strncmp(p, key, kl) != 0) return NULL;
     p += kl;
     for (;;) {
@@ -111,11 +115,13 @@ static int ref_line(const char *s, struct trace_record *r)
     const char *p = s;
     unsigned long long v;
     unsigned n2 = 0;
-    while (ref_blank(*p)) p++;
+    while (ref_blank(*p))
+        p++;
     if (*p == '#') return 0;
     {
         const char *q = p;
-        while (ref_blank(*q) || *q == '\r') q++;
+        while (ref_blank(*q) || *q == '\r')
+            q++;
         if (*q == '\0') return 0;
     }
     memset(r, 0, sizeof(*r));
@@ -138,7 +144,8 @@ static int ref_line(const char *s, struct trace_record *r)
     } else {
         return -1;
     }
-    while (ref_blank(*p) || *p == '\r') p++;
+    while (ref_blank(*p) || *p == '\r')
+        p++;
     return *p == '\0' ? 1 : -1;
 }
 
@@ -147,8 +154,8 @@ static int ref_line(const char *s, struct trace_record *r)
 struct parsed {
     struct trace_record *rec; /* MAX_RECS */
     unsigned n;
-    int status;     /* 0 = the whole file read, INC_ERR_FORMAT = refused */
-    unsigned line;  /* the line refused */
+    int status;    /* 0 = the whole file read, INC_ERR_FORMAT = refused */
+    unsigned line; /* the line refused */
 };
 
 static void ref_parse(const char *d, size_t len, struct parsed *out)
@@ -213,9 +220,11 @@ static void dut_parse(const char *d, size_t len, struct parsed *out, char *msg, 
 
 static bool same_record(const struct trace_record *a, const struct trace_record *b)
 {
-    if (a->kind != b->kind || a->t_ns != b->t_ns || a->pin != b->pin || a->line != b->line) return false;
+    if (a->kind != b->kind || a->t_ns != b->t_ns || a->pin != b->pin || a->line != b->line)
+        return false;
     if (a->kind == TRACE_IRQ) return true;
-    return a->bits == b->bits && a->n == b->n && memcmp(a->mosi, b->mosi, a->n * sizeof(uint16_t)) == 0 &&
+    return a->bits == b->bits && a->n == b->n &&
+           memcmp(a->mosi, b->mosi, a->n * sizeof(uint16_t)) == 0 &&
            memcmp(a->miso, b->miso, a->n * sizeof(uint16_t)) == 0;
 }
 
@@ -223,8 +232,10 @@ static bool same_record(const struct trace_record *a, const struct trace_record 
 static bool on_record_line(const char *text, size_t len, size_t pos, size_t *start, size_t *last_eq)
 {
     size_t s = pos, e = pos;
-    while (s > 0 && text[s - 1] != '\n') s--;
-    while (e < len && text[e] != '\n') e++;
+    while (s > 0 && text[s - 1] != '\n')
+        s--;
+    while (e < len && text[e] != '\n')
+        e++;
     *start = s;
     *last_eq = s;
     for (size_t i = s; i < e; i++) {
@@ -254,19 +265,18 @@ static bool must_fail(const char *s, size_t len, const struct fuzz_case *c)
         }
         return false;
     case FUZZ_TRUNC:
-        return c->where > 0 && on_record_line(s, len, c->where - 1u, &start, &eq) && c->where > start &&
-               c->where <= eq + 1u;
+        return c->where > 0 && on_record_line(s, len, c->where - 1u, &start, &eq) &&
+               c->where > start && c->where <= eq + 1u;
     case FUZZ_TOKEN:
-        return strcmp(fuzz_tokens[c->arg], "010") != 0 && on_record_line(s, len, c->where, &start, &eq);
+        return strcmp(fuzz_tokens[c->arg], "010") != 0 &&
+               on_record_line(s, len, c->where, &start, &eq);
     case FUZZ_EXTRA: {
         size_t e;
         const size_t ls = fuzz_line_span(s, len, c->where, &e);
         return ls < len && on_record_line(s, len, ls, &start, &eq);
     }
-    case FUZZ_LONG:
-        return true;
-    default:
-        return false;
+    case FUZZ_LONG: return true;
+    default: return false;
     }
 }
 
@@ -305,13 +315,15 @@ static void test_trace_sweep(void)
                 (dut.status != 0 && dut.line != ref.line)) {
                 agree = false;
             }
-            for (i = 0; agree && i < dut.n; i++) agree = same_record(&dut.rec[i], &ref.rec[i]);
+            for (i = 0; agree && i < dut.n; i++)
+                agree = same_record(&dut.rec[i], &ref.rec[i]);
             if (!agree) {
                 char what[400];
-                snprintf(what, sizeof what,
-                         "reader %s (%u records, line %u, '%s'), reference %s (%u records, line %u)",
-                         dut.status ? "refused" : "accepted", dut.n, dut.status ? dut.line : 0u, msg,
-                         ref.status ? "refuses" : "accepts", ref.n, ref.status ? ref.line : 0u);
+                snprintf(
+                    what, sizeof what,
+                    "reader %s (%u records, line %u, '%s'), reference %s (%u records, line %u)",
+                    dut.status ? "refused" : "accepted", dut.n, dut.status ? dut.line : 0u, msg,
+                    ref.status ? "refuses" : "accepts", ref.n, ref.status ? ref.line : 0u);
                 report(seeds[si], k, &c, what);
             }
             unit_checks++;
@@ -319,20 +331,23 @@ static void test_trace_sweep(void)
                 char want[32];
                 snprintf(want, sizeof want, "trace line %u:", dut.line);
                 unit_checks++;
-                if (strncmp(msg, want, strlen(want)) != 0) report(seeds[si], k, &c, "message does not name the line");
+                if (strncmp(msg, want, strlen(want)) != 0)
+                    report(seeds[si], k, &c, "message does not name the line");
             } else {
                 n_accepted++;
             }
             if (must_fail(seed, len, &c)) {
                 n_must_fail++;
                 unit_checks++;
-                if (dut.status == 0) report(seeds[si], k, &c, "a certainly broken file was accepted");
+                if (dut.status == 0)
+                    report(seeds[si], k, &c, "a certainly broken file was accepted");
             }
         }
         free(seed);
     }
     fuzz_case_free(&c);
-    printf("trace: %u cases, %u accepted, %u that must be refused\n", n_cases, n_accepted, n_must_fail);
+    printf("trace: %u cases, %u accepted, %u that must be refused\n", n_cases, n_accepted,
+           n_must_fail);
     CHECK(n_cases > UNIT_SIZE(30000u, 15000u));
     CHECK(n_must_fail > n_cases / 10u);
     CHECK(n_accepted > n_cases / 10u);
@@ -344,11 +359,12 @@ static void test_trace_regressions(void)
     static const char *const bad[] = {
         "F t=18446744073709551616 cs=4 bits=16 mosi=5600 miso=A5C3\n", /* t overflows 64 bits */
         "F t=99999999999999999999 cs=4 bits=16 mosi=5600 miso=A5C3\n",
-        "F t=500009cs=4 bits=16 mosi=5600 miso=A5C3\n",                 /* no blank between fields */
+        "F t=500009cs=4 bits=16 mosi=5600 miso=A5C3\n", /* no blank between fields */
         "F t=5 cs=4 bits=16mosi=5600 miso=A5C3\n",
-        "F t=5 cs=4 bits=16 mosi=0x12 miso=A5C3\n",                    /* C hex prefix in a word */
+        "F t=5 cs=4 bits=16 mosi=0x12 miso=A5C3\n", /* C hex prefix in a word */
         "I t=5pin=7\n",
-        "F t=5 cs=4 bits=16 mosi=5600 miso=A\0" "5C3",                 /* NUL cuts the last line */
+        "F t=5 cs=4 bits=16 mosi=5600 miso=A\0"
+        "5C3", /* NUL cuts the last line */
     };
     static const size_t bad_len[] = {0, 0, 0, 0, 0, 0, 46};
     static char msg[TRACE_MSG_LEN];
@@ -420,10 +436,11 @@ static size_t make_vcd(char *out, size_t cap)
     uint64_t t = 100;
     const uint16_t words[3] = {0x5600, 0xA5C3, 0x0FF0};
     unsigned w, b, period;
-    n += (size_t)snprintf(out + n, cap - n,
-                          "$timescale 1 ns $end\n$scope module board $end\n$var wire 1 ! sclk $end\n"
-                          "$var wire 1 \" mosi $end\n$var wire 1 # miso $end\n$var wire 1 $ cs1 $end\n"
-                          "$upscope $end\n$enddefinitions $end\n#0\n$dumpvars\n1!\n0\"\n0#\n1$\n$end\n");
+    n += (size_t)snprintf(
+        out + n, cap - n,
+        "$timescale 1 ns $end\n$scope module board $end\n$var wire 1 ! sclk $end\n"
+        "$var wire 1 \" mosi $end\n$var wire 1 # miso $end\n$var wire 1 $ cs1 $end\n"
+        "$upscope $end\n$enddefinitions $end\n#0\n$dumpvars\n1!\n0\"\n0#\n1$\n$end\n");
     for (period = 0, w = 0; period < 2u; period++) {
         const unsigned nw = period == 0 ? 1u : 2u;
         unsigned i;
@@ -434,7 +451,8 @@ static size_t make_vcd(char *out, size_t cap)
                 const unsigned bit = (words[w] >> (15u - b)) & 1u;
                 /* mode 3: data changes on the falling edge, sampled on the rising edge */
                 n += (size_t)snprintf(out + n, cap - n, "#%llu\n0!\n%u\"\n%u#\n#%llu\n1!\n",
-                                      (unsigned long long)t, bit, bit ^ 1u, (unsigned long long)(t + 250));
+                                      (unsigned long long)t, bit, bit ^ 1u,
+                                      (unsigned long long)(t + 250));
                 t += 500;
             }
         }
@@ -447,8 +465,8 @@ static size_t make_vcd(char *out, size_t cap)
 static const struct trace_vcd_opts vopts = {"sclk", "mosi", "miso", "cs1", 3, 16, 7};
 
 /* Convert; on success check the output thoroughly. Returns the converter's result. */
-static int convert_and_check(const char *d, size_t len, const char *label, unsigned long k, char *msg,
-                             size_t msg_len, unsigned *records_out)
+static int convert_and_check(const char *d, size_t len, const char *label, unsigned long k,
+                             char *msg, size_t msg_len, unsigned *records_out)
 {
     static struct trace_record r;
     FILE *in = len ? fmemopen((void *)(uintptr_t)d, len, "r") : tmpfile();
@@ -469,25 +487,30 @@ static int convert_and_check(const char *d, size_t len, const char *label, unsig
         rewind(out);
         while ((pr = trace_parse_next(out, &line, &r, pmsg, sizeof pmsg)) == 1) {
             got++;
-            if (r.kind != TRACE_PERIOD || r.bits != vopts.bits || r.pin != vopts.cs_pin || r.n < 1u ||
-                r.n > TRACE_MAX_WORDS || r.t_ns < last_t) {
-                unit_fail(__FILE__, __LINE__, "%s case %lu: record %u inconsistent (kind %d bits %u pin %u n %u "
-                          "t %llu after %llu)", label, k, got, (int)r.kind, r.bits, r.pin, r.n,
+            if (r.kind != TRACE_PERIOD || r.bits != vopts.bits || r.pin != vopts.cs_pin ||
+                r.n < 1u || r.n > TRACE_MAX_WORDS || r.t_ns < last_t) {
+                unit_fail(__FILE__, __LINE__,
+                          "%s case %lu: record %u inconsistent (kind %d bits %u pin %u n %u "
+                          "t %llu after %llu)",
+                          label, k, got, (int)r.kind, r.bits, r.pin, r.n,
                           (unsigned long long)r.t_ns, (unsigned long long)last_t);
             }
             last_t = r.t_ns;
         }
         unit_checks++;
         if (pr != 0 || got != (unsigned)n) {
-            unit_fail(__FILE__, __LINE__, "%s case %lu: returned %d records, the output parses to %u (%d %s)",
-                      label, k, n, got, pr, pr ? pmsg : "");
+            unit_fail(__FILE__, __LINE__,
+                      "%s case %lu: returned %d records, the output parses to %u (%d %s)", label, k,
+                      n, got, pr, pr ? pmsg : "");
         }
         *records_out = got;
     } else if (n != INC_ERR_FORMAT) {
-        unit_fail(__FILE__, __LINE__, "%s case %lu: result %d is neither a count nor INC_ERR_FORMAT", label, k, n);
+        unit_fail(__FILE__, __LINE__,
+                  "%s case %lu: result %d is neither a count nor INC_ERR_FORMAT", label, k, n);
     } else {
         unit_checks++;
-        if (msg[0] == '\0') unit_fail(__FILE__, __LINE__, "%s case %lu: refused without a message", label, k);
+        if (msg[0] == '\0')
+            unit_fail(__FILE__, __LINE__, "%s case %lu: refused without a message", label, k);
     }
     fclose(out);
     return n;
@@ -500,7 +523,8 @@ static void test_vcd_sweep(void)
     struct fuzz_case c = {NULL, 0, FUZZ_END, 0, 0};
     const size_t len = make_vcd(seed, sizeof seed);
     const size_t enddefs = (size_t)(strstr(seed, "$enddefinitions") - seed);
-    const size_t stride = UNIT_SIZE(len / 600u, len / 300u) ? UNIT_SIZE(len / 600u, len / 300u) : 1u;
+    const size_t stride = UNIT_SIZE(len / 600u, len / 300u) ? UNIT_SIZE(len / 600u, len / 300u)
+                                                            : 1u;
     unsigned long k;
     unsigned recs = 0, cases = 0, ok = 0, must = 0;
     static struct trace_record r;
@@ -532,8 +556,10 @@ static void test_vcd_sweep(void)
         n = convert_and_check(c.data, c.len, "vcd", k, msg, sizeof msg, &recs);
         ok += n >= 0;
         if (c.family == FUZZ_TRUNC && c.where < enddefs + 15u) must_fail = true;
-        if (c.family == FUZZ_DELLINE && c.where >= 2u && c.where <= 5u) must_fail = true; /* a $var */
-        if (c.family == FUZZ_TOKEN && c.where > enddefs && c.where > 0 && c.data[c.where - 1] == '#') {
+        if (c.family == FUZZ_DELLINE && c.where >= 2u && c.where <= 5u)
+            must_fail = true; /* a $var */
+        if (c.family == FUZZ_TOKEN && c.where > enddefs && c.where > 0 &&
+            c.data[c.where - 1] == '#') {
             /* a timestamp: only a plain decimal passes ("010" is 10: valid where time does not
              * run backwards, which the converter must then notice, see the regressions) */
             must_fail = strcmp(fuzz_tokens[c.arg], "010") != 0;
@@ -542,8 +568,10 @@ static void test_vcd_sweep(void)
             must++;
             unit_checks++;
             if (n >= 0) {
-                unit_fail(__FILE__, __LINE__, "vcd case %lu (%s at %zu, arg %u): a broken capture was accepted "
-                          "(%d records)", k, fuzz_family_name(c.family), c.where, c.arg, n);
+                unit_fail(__FILE__, __LINE__,
+                          "vcd case %lu (%s at %zu, arg %u): a broken capture was accepted "
+                          "(%d records)",
+                          k, fuzz_family_name(c.family), c.where, c.arg, n);
             }
         }
     }
@@ -561,24 +589,27 @@ static void test_vcd_regressions(void)
         "$timescale 1 ns $end\n$var wire 1 ! sclk $end\n$var wire 1 \" mosi $end\n$var wire 1 # miso $end\n"
         "$var wire 1 $ cs1 $end\n$enddefinitions $end\n";
     static const char *const bodies[] = {
-        "#abc\n1!\n",                    /* a timestamp that is not a number */
-        "#-5\n1!\n",                     /* a negative timestamp */
-        "#99999999999999999999\n1!\n",   /* overflows 64 bits */
-        "#100\n1!\n#50\n0!\n",           /* time runs backwards */
-        "#\n1!\n",                       /* empty timestamp */
+        "#abc\n1!\n",                  /* a timestamp that is not a number */
+        "#-5\n1!\n",                   /* a negative timestamp */
+        "#99999999999999999999\n1!\n", /* overflows 64 bits */
+        "#100\n1!\n#50\n0!\n",         /* time runs backwards */
+        "#\n1!\n",                     /* empty timestamp */
     };
-    static const char *const scales[] = {"$timescale -1 ns $end\n", "$timescale 99999999999 s $end\n",
-                                         "$timescale 1 ks $end\n"};
+    static const char *const scales[] = {
+        "$timescale -1 ns $end\n", "$timescale 99999999999 s $end\n", "$timescale 1 ks $end\n"};
     char text[1024], msg[200];
     unsigned i, recs;
     for (i = 0; i < sizeof bodies / sizeof bodies[0]; i++) {
         snprintf(text, sizeof text, "%s%s", head, bodies[i]);
-        CHECK_ERR(convert_and_check(text, strlen(text), "vcd regression", i, msg, sizeof msg, &recs), INC_ERR_FORMAT);
+        CHECK_ERR(
+            convert_and_check(text, strlen(text), "vcd regression", i, msg, sizeof msg, &recs),
+            INC_ERR_FORMAT);
         CHECK(strstr(msg, "timestamp") != NULL);
     }
     for (i = 0; i < sizeof scales / sizeof scales[0]; i++) {
         snprintf(text, sizeof text, "%s%s#1\n", scales[i], head + strlen("$timescale 1 ns $end\n"));
-        CHECK_ERR(convert_and_check(text, strlen(text), "vcd timescale", i, msg, sizeof msg, &recs), INC_ERR_FORMAT);
+        CHECK_ERR(convert_and_check(text, strlen(text), "vcd timescale", i, msg, sizeof msg, &recs),
+                  INC_ERR_FORMAT);
         CHECK(strstr(msg, "timescale") != NULL);
     }
 }

@@ -50,10 +50,19 @@ static inline void fxt_print_sci(double v)
         printf("0");
         return;
     }
-    while (v < 1.0) { v *= 10.0; e--; }
-    while (v >= 10.0) { v /= 10.0; e++; }
+    while (v < 1.0) {
+        v *= 10.0;
+        e--;
+    }
+    while (v >= 10.0) {
+        v /= 10.0;
+        e++;
+    }
     m = (long long)(v * 1000.0 + 0.5);
-    if (m >= 10000) { m /= 10; e++; }
+    if (m >= 10000) {
+        m /= 10;
+        e++;
+    }
     printf("%lld.%03llde%d", m / 1000, m % 1000, e);
 }
 
@@ -71,12 +80,13 @@ static inline void fxt_report(const char *name, const struct fxt_err *e, double 
 }
 
 /* Assert a sweep's worst error against its bound, naming the worst input on failure. */
-#define FXT_CHECK_ERR(e, bound)                                                             \
-    do {                                                                                    \
-        unit_checks++;                                                                      \
-        if (!((e).max <= (bound)) || (e).count == 0u)                                       \
-            unit_fail(__FILE__, __LINE__, "max error %.6g > bound %.6g (or no points) at (%lld, %lld)", \
-                      (e).max, (double)(bound), (long long)(e).at_a, (long long)(e).at_b);  \
+#define FXT_CHECK_ERR(e, bound)                                                              \
+    do {                                                                                     \
+        unit_checks++;                                                                       \
+        if (!((e).max <= (bound)) || (e).count == 0u)                                        \
+            unit_fail(__FILE__, __LINE__,                                                    \
+                      "max error %.6g > bound %.6g (or no points) at (%lld, %lld)", (e).max, \
+                      (double)(bound), (long long)(e).at_a, (long long)(e).at_b);            \
     } while (0)
 
 #endif /* INCLINO_FX_TEST_H */

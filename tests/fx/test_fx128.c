@@ -80,7 +80,8 @@ static void test_div_vectors(void)
 
 static void test_small_helpers(void)
 {
-    fx_i128_t m1 = fx_i128_from_i64(-1), z = fx_i128_from_i64(0), big = fx_i128_mul(INT64_MIN, INT64_MIN);
+    fx_i128_t m1 = fx_i128_from_i64(-1), z = fx_i128_from_i64(0),
+              big = fx_i128_mul(INT64_MIN, INT64_MIN);
     CHECK_EQ_HEX(m1.lo, UINT64_MAX);
     CHECK_EQ_HEX(m1.hi, UINT64_MAX);
     CHECK(fx_i128_is_neg(m1));

@@ -13,9 +13,19 @@
 #define N_RANDOM FX_DENSITY(1000000L, 200000L)
 
 static const int32_t edge32[] = {
-    INT32_MIN, INT32_MIN + 1, -1073741824, -65537, -65536, -65535, -32769, -32768, -32767,
-    -3, -2, -1, 0, 1, 2, 3, 32767, 32768, 32769, 65535, 65536, 65537, 1073741824,
-    INT32_MAX - 1, INT32_MAX,
+    INT32_MIN,   INT32_MIN + 1,
+    -1073741824, -65537,
+    -65536,      -65535,
+    -32769,      -32768,
+    -32767,      -3,
+    -2,          -1,
+    0,           1,
+    2,           3,
+    32767,       32768,
+    32769,       65535,
+    65536,       65537,
+    1073741824,  INT32_MAX - 1,
+    INT32_MAX,
 };
 #define N_EDGE (sizeof edge32 / sizeof edge32[0])
 
@@ -33,7 +43,8 @@ static void test_asr_and_uabs(void)
     unsigned s;
     for (i = 0; i < N_EDGE; i++) {
         int32_t x = edge32[i];
-        for (s = 0; s <= 31u; s++) CHECK_EQ_INT(fx_asr32(x, s), floor_pow2(x, s));
+        for (s = 0; s <= 31u; s++)
+            CHECK_EQ_INT(fx_asr32(x, s), floor_pow2(x, s));
         CHECK_EQ_INT(fx_asr32(x, 32), x < 0 ? -1 : 0);
         CHECK_EQ_INT(fx_asr32(x, 200), x < 0 ? -1 : 0);
         for (s = 0; s <= 62u; s++) {
@@ -95,7 +106,7 @@ static void test_rounding_shifts(void)
     CHECK_EQ_INT(fx_rshift_round32(-3, 1), -2);
     CHECK_EQ_INT(fx_rshift_round32(1, 1), 1);
     CHECK_EQ_INT(fx_rshift_round32(-1, 1), -1);
-    CHECK_EQ_INT(fx_rshift_round32(5, 2), 1);   /* 1.25 */
+    CHECK_EQ_INT(fx_rshift_round32(5, 2), 1); /* 1.25 */
     CHECK_EQ_INT(fx_rshift_round32(-5, 2), -1);
     CHECK_EQ_INT(fx_rshift_round32(-6, 2), -2); /* -1.5 */
     CHECK_EQ_INT(fx_rshift_round32(6, 2), 2);
@@ -131,14 +142,15 @@ static void test_rounding_shifts(void)
         s = unit_rand32(&st) % 62u;
         CHECK_EQ_INT(fx_rshift_round64(y, s), unit_round_div(y, (int64_t)1 << s));
         /* odd symmetry */
-        if (x != INT32_MIN) CHECK_EQ_INT(fx_rshift_round32(-x, s % 32u), -fx_rshift_round32(x, s % 32u));
+        if (x != INT32_MIN)
+            CHECK_EQ_INT(fx_rshift_round32(-x, s % 32u), -fx_rshift_round32(x, s % 32u));
     }
     /* Conversions are rounding shifts */
     CHECK_EQ_INT(fx_q16_round_int(FX_Q16_ONE + FX_Q16_HALF), 2);
     CHECK_EQ_INT(fx_q16_round_int(-FX_Q16_ONE - FX_Q16_HALF), -2);
     CHECK_EQ_INT(fx_q16_round_int(FX_Q16_HALF - 1), 0);
     CHECK_EQ_INT(fx_q30_to_q16(FX_Q30_ONE), FX_Q16_ONE);
-    CHECK_EQ_INT(fx_q30_to_q16(8192), 1);   /* 0.5 LSB Q16 -> away */
+    CHECK_EQ_INT(fx_q30_to_q16(8192), 1); /* 0.5 LSB Q16 -> away */
     CHECK_EQ_INT(fx_q30_to_q16(-8192), -1);
     CHECK_EQ_INT(fx_q30_to_q16(8191), 0);
     CHECK_EQ_INT(fx_q30_to_q16(INT32_MIN), -131072);
@@ -192,9 +204,9 @@ static void test_multiply(void)
     CHECK_EQ_INT(fx_mul_q16(INT32_MIN, FX_Q16_ONE), INT32_MIN);
     CHECK_EQ_INT(fx_mul_q16(INT32_MIN, -FX_Q16_ONE), INT32_MAX);
     CHECK_EQ_INT(fx_mul_q30(FX_Q30_ONE, FX_Q30_ONE), FX_Q30_ONE);
-    CHECK_EQ_INT(fx_mul_q30(INT32_MIN, FX_Q30_ONE), INT32_MIN);       /* -2 * 1 = -2: exact */
-    CHECK_EQ_INT(fx_mul_q30(INT32_MIN, INT32_MIN), INT32_MAX);        /* 4 saturates */
-    CHECK_EQ_INT(fx_mul_q30(FX_Q30_HALF, 3), 2);                      /* 1.5 LSB -> 2 */
+    CHECK_EQ_INT(fx_mul_q30(INT32_MIN, FX_Q30_ONE), INT32_MIN); /* -2 * 1 = -2: exact */
+    CHECK_EQ_INT(fx_mul_q30(INT32_MIN, INT32_MIN), INT32_MAX);  /* 4 saturates */
+    CHECK_EQ_INT(fx_mul_q30(FX_Q30_HALF, 3), 2);                /* 1.5 LSB -> 2 */
     CHECK_EQ_INT(fx_mul_q30(-FX_Q30_HALF, 3), -2);
     CHECK_EQ_INT(fx_mul_q16_q30(FX_Q16_INT(1000), FX_Q30_HALF), FX_Q16_INT(500));
     CHECK_EQ_INT(fx_mul_q16_q30(FX_Q16_INT(30000), FX_Q30_ONE + FX_Q30_HALF), INT32_MAX);
@@ -222,7 +234,8 @@ static int div_mismatch(int32_t num, int32_t den, unsigned f)
     int32_t q = 0;
     int rc = fx_div(num, den, f, &q);
     int64_t e;
-    if (den == 0) return rc != INC_ERR_INVAL || q != (num > 0 ? INT32_MAX : (num < 0 ? INT32_MIN : 0));
+    if (den == 0)
+        return rc != INC_ERR_INVAL || q != (num > 0 ? INT32_MAX : (num < 0 ? INT32_MIN : 0));
     e = exact_div(num, den, f);
     return q != fxt_sat(e) || rc != ((e >= INT32_MIN && e <= INT32_MAX) ? INC_OK : INC_ERR_RANGE);
 }
@@ -287,7 +300,8 @@ static void test_divide(void)
     for (i = 0; i < N_EDGE; i++) {
         for (j = 0; j < N_EDGE; j++) {
             unsigned f;
-            for (f = 0; f <= 31u; f++) bad += (unsigned long)div_mismatch(edge32[i], edge32[j], f);
+            for (f = 0; f <= 31u; f++)
+                bad += (unsigned long)div_mismatch(edge32[i], edge32[j], f);
         }
     }
     for (k = 0; k < N_RANDOM; k++) {
@@ -342,7 +356,7 @@ static void test_divide64(void)
     CHECK_EQ_INT(fx_div64(2 * (int64_t)INT32_MIN - 1, 2u), INT32_MIN); /* -2^31 - 0.5 */
     CHECK_EQ_INT(fx_div64(INT64_MAX, 1u), INT32_MAX);
     CHECK_EQ_INT(fx_div64(INT64_MIN, 1u), INT32_MIN);
-    CHECK_EQ_INT(fx_div64(INT64_MIN, UINT32_MAX), INT32_MIN);   /* -2147483648.5 */
+    CHECK_EQ_INT(fx_div64(INT64_MIN, UINT32_MAX), INT32_MIN); /* -2147483648.5 */
     CHECK_EQ_INT(fx_div64(INT64_MAX, UINT32_MAX), INT32_MAX);
     CHECK_EQ_INT(fx_div64(INT64_MIN / 2, UINT32_MAX), -1073741824); /* -1073741824.25 */
     CHECK_EQ_INT(fx_div64(3, UINT32_MAX), 0);
@@ -467,10 +481,12 @@ static void test_accumulate(void)
     CHECK_EQ_INT(m, -7);
 
     /* array mean */
-    for (i = 0; i < 1000; i++) arr[i] = INT32_MAX;
+    for (i = 0; i < 1000; i++)
+        arr[i] = INT32_MAX;
     CHECK_OK(fx_mean_i32(arr, 1000, &m));
     CHECK_EQ_INT(m, INT32_MAX);
-    for (i = 0; i < 1000; i++) arr[i] = (int32_t)i - 600; /* mean -100.5 */
+    for (i = 0; i < 1000; i++)
+        arr[i] = (int32_t)i - 600; /* mean -100.5 */
     CHECK_OK(fx_mean_i32(arr, 1000, &m));
     CHECK_EQ_INT(m, -101);
     CHECK_OK(fx_mean_i32(arr, 3, &m)); /* -600 -599 -598 */

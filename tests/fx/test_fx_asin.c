@@ -55,12 +55,14 @@ static void test_sweeps(void)
     long k;
     int64_t x;
     odd_bad = 0;
-    for (x = -FX_Q30_ONE; x <= FX_Q30_ONE; x += STRIDE) one(&str, (int32_t)x);
+    for (x = -FX_Q30_ONE; x <= FX_Q30_ONE; x += STRIDE)
+        one(&str, (int32_t)x);
     for (k = 0; k < END; k++) {
         one(&ends, FX_Q30_ONE - (int32_t)k);
         one(&ends, -FX_Q30_ONE + (int32_t)k);
     }
-    for (k = -CENTRE; k <= CENTRE; k++) one(&ctr, (int32_t)k);
+    for (k = -CENTRE; k <= CENTRE; k++)
+        one(&ctr, (int32_t)k);
     fxt_report("fx_asin_deg stride", &str, 1.0 / FXT_Q16, "deg");
     fxt_report("fx_asin_deg last codes before +-1", &ends, 1.0 / FXT_Q16, "deg");
     fxt_report("fx_asin_deg centre", &ctr, 1.0 / FXT_Q16, "deg");

@@ -39,8 +39,8 @@ static void one(struct fxt_err *e, int32_t y, int32_t x)
 
 static void test_exact_values(void)
 {
-    static const int32_t v[] = {INT32_MIN, INT32_MIN + 1, -1073741824, -2, -1, 1, 2,
-                                1073741824, INT32_MAX - 1, INT32_MAX};
+    static const int32_t v[] = {INT32_MIN, INT32_MIN + 1, -1073741824,   -2,       -1, 1,
+                                2,         1073741824,    INT32_MAX - 1, INT32_MAX};
     size_t i;
     CHECK_EQ_INT(fx_atan2_deg(0, 0), 0);
     for (i = 0; i < sizeof v / sizeof v[0]; i++) {
@@ -59,8 +59,8 @@ static void test_exact_values(void)
     CHECK_EQ_INT(fx_atan2_deg(INT32_MIN, INT32_MIN), -FX_DEG_90 - FX_DEG_45);
     CHECK_EQ_INT(fx_atan2_deg(INT32_MIN, INT32_MAX), -FX_DEG_45); /* 45.0000000134 deg */
     CHECK_EQ_INT(fx_atan2_deg(INT32_MAX, INT32_MIN), FX_DEG_90 + FX_DEG_45);
-    CHECK_EQ_INT(fx_atan2_deg(1, INT32_MAX), 0); /* 2.7e-8 deg */
-    CHECK_EQ_INT(fx_atan2_deg(-1, INT32_MIN), -FX_DEG_180);  /* -180 + 2.7e-8 deg */
+    CHECK_EQ_INT(fx_atan2_deg(1, INT32_MAX), 0);            /* 2.7e-8 deg */
+    CHECK_EQ_INT(fx_atan2_deg(-1, INT32_MIN), -FX_DEG_180); /* -180 + 2.7e-8 deg */
     CHECK_EQ_INT(fx_atan2_deg(INT32_MAX, 1), FX_DEG_90);
     CHECK_EQ_INT(fx_atan2_deg(1, 1), FX_DEG_45);
     CHECK_EQ_INT(fx_atan2_deg(3, 4), 2416306); /* 36.8699 deg = 2416305.61 LSB */
@@ -68,12 +68,12 @@ static void test_exact_values(void)
 
 static void test_sweeps(void)
 {
-    static const double radius[] = {1.0, 2.0, 3.0, 7.0, 30.0, 1000.0, 65536.0, 1.0e6,
-                                    16777216.0, 1.0e8, 268435456.0, 1073741824.0, 2.0e9,
-                                    2147483647.0};
-    static const int32_t ext[] = {INT32_MIN, INT32_MIN + 1, INT32_MIN + 2, -1073741825,
-                                  -1073741824, -2, -1, 0, 1, 2, 1073741824, 1073741825,
-                                  INT32_MAX - 2, INT32_MAX - 1, INT32_MAX};
+    static const double radius[] = {1.0,         2.0,          3.0,   7.0,         30.0,
+                                    1000.0,      65536.0,      1.0e6, 16777216.0,  1.0e8,
+                                    268435456.0, 1073741824.0, 2.0e9, 2147483647.0};
+    static const int32_t ext[] = {
+        INT32_MIN, INT32_MIN + 1, INT32_MIN + 2, -1073741825,   -1073741824,   -2,       -1, 0, 1,
+        2,         1073741824,    1073741825,    INT32_MAX - 2, INT32_MAX - 1, INT32_MAX};
     struct fxt_err all = {0}, ang = {0}, rnd = {0}, sml = {0}, xtr = {0};
     uint32_t st = 0x5EED1u;
     size_t ri, i, j;
@@ -90,11 +90,14 @@ static void test_sweeps(void)
             one(&ang, y, x);
         }
     }
-    for (k = 0; k < N_RAND; k++) one(&rnd, fxt_rand_scaled(&st), fxt_rand_scaled(&st));
+    for (k = 0; k < N_RAND; k++)
+        one(&rnd, fxt_rand_scaled(&st), fxt_rand_scaled(&st));
     for (y = -SMALL; y <= SMALL; y++)
-        for (x = -SMALL; x <= SMALL; x++) one(&sml, y, x);
+        for (x = -SMALL; x <= SMALL; x++)
+            one(&sml, y, x);
     for (i = 0; i < sizeof ext / sizeof ext[0]; i++)
-        for (j = 0; j < sizeof ext / sizeof ext[0]; j++) one(&xtr, ext[i], ext[j]);
+        for (j = 0; j < sizeof ext / sizeof ext[0]; j++)
+            one(&xtr, ext[i], ext[j]);
 
     fxt_report("fx_atan2_deg angular sweep", &ang, 1.0 / FXT_Q16, "deg");
     fxt_report("fx_atan2_deg random pairs", &rnd, 1.0 / FXT_Q16, "deg");

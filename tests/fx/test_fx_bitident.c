@@ -20,7 +20,8 @@ static void crc_byte(uint8_t b)
 {
     int k;
     crc ^= b;
-    for (k = 0; k < 8; k++) crc = (crc >> 1) ^ (0xEDB88320u & (0u - (crc & 1u)));
+    for (k = 0; k < 8; k++)
+        crc = (crc >> 1) ^ (0xEDB88320u & (0u - (crc & 1u)));
 }
 
 static void put32(uint32_t v)
@@ -87,8 +88,8 @@ static void run_one(int32_t a, int32_t b, uint32_t r)
 
 static void test_checksum(void)
 {
-    static const int32_t ext[] = {INT32_MIN, INT32_MIN + 1, -FX_Q30_ONE, -FX_Q16_ONE, -1, 0, 1,
-                                  FX_Q16_ONE, FX_Q30_ONE, INT32_MAX - 1, INT32_MAX};
+    static const int32_t ext[] = {INT32_MIN, INT32_MIN + 1, -FX_Q30_ONE, -FX_Q16_ONE,   -1,       0,
+                                  1,         FX_Q16_ONE,    FX_Q30_ONE,  INT32_MAX - 1, INT32_MAX};
     uint32_t st = 0x1F0E2D3Cu;
     struct fx_sum acc;
     int32_t mean = 0;
@@ -98,7 +99,8 @@ static void test_checksum(void)
     crc = 0xFFFFFFFFu;
     fx_sum_reset(&acc);
     for (i = 0; i < sizeof ext / sizeof ext[0]; i++)
-        for (j = 0; j < sizeof ext / sizeof ext[0]; j++) run_one(ext[i], ext[j], (uint32_t)(i * 11u + j));
+        for (j = 0; j < sizeof ext / sizeof ext[0]; j++)
+            run_one(ext[i], ext[j], (uint32_t)(i * 11u + j));
     for (n = 0; n < FX_BITIDENT_N; n++) {
         int32_t a = fxt_rand_scaled(&st), b = fxt_rand_scaled(&st);
         uint32_t r = unit_rand32(&st);
@@ -110,7 +112,8 @@ static void test_checksum(void)
     put64((uint64_t)acc.sum);
     crc ^= 0xFFFFFFFFu;
     printf("MEASURED fx bit-identity CRC-32 = 0x%08lx over %d random + %u extreme input sets\n",
-           (unsigned long)crc, FX_BITIDENT_N, (unsigned)(sizeof ext / sizeof ext[0] * sizeof ext / sizeof ext[0]));
+           (unsigned long)crc, FX_BITIDENT_N,
+           (unsigned)(sizeof ext / sizeof ext[0] * sizeof ext / sizeof ext[0]));
     CHECK_EQ_HEX(crc, FX_BITIDENT_CRC);
 }
 

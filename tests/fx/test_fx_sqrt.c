@@ -43,7 +43,8 @@ static void test_isqrt32(void)
     uint32_t n, k, st = 7u;
     unsigned e;
     long i;
-    for (n = 0; n < n_exh; n++, total++) bad += !floor_ok(n, fx_isqrt32(n));
+    for (n = 0; n < n_exh; n++, total++)
+        bad += !floor_ok(n, fx_isqrt32(n));
     for (k = 1; k < 65536u; k++) {
         uint32_t sq = k * k, c[4];
         int j;
@@ -51,7 +52,8 @@ static void test_isqrt32(void)
         c[1] = sq;
         c[2] = sq + k;
         c[3] = sq + k + 1u; /* may wrap to 0 for k = 65535: still a valid input */
-        for (j = 0; j < 4; j++, total++) bad += !floor_ok(c[j], fx_isqrt32(c[j]));
+        for (j = 0; j < 4; j++, total++)
+            bad += !floor_ok(c[j], fx_isqrt32(c[j]));
         CHECK(fx_isqrt32(sq) == k && fx_isqrt32(sq - 1u) == k - 1u);
     }
     for (e = 0; e < 32u; e++) {
@@ -106,10 +108,12 @@ static void test_isqrt64(void)
     }
     for (i = 0; i < n_rand; i++, total += 3) {
         uint64_t k = unit_rand32(&st) >> (unit_rand32(&st) % 32u), sq = k * k;
-        uint64_t v = (((uint64_t)unit_rand32(&st) << 32) | unit_rand32(&st)) >> (unit_rand32(&st) % 64u);
+        uint64_t v = (((uint64_t)unit_rand32(&st) << 32) | unit_rand32(&st)) >>
+                     (unit_rand32(&st) % 64u);
         bad += !floor_ok(v, fx_isqrt64(v)) + !floor_ok(sq + k, fx_isqrt64(sq + k));
         bad += !floor_ok(sq - (k != 0), fx_isqrt64(sq - (k != 0)));
-        badr += round64_bad(v) + round64_bad(sq + k) + round64_bad(sq - k) + round64_bad(sq + k + 1u);
+        badr += round64_bad(v) + round64_bad(sq + k) + round64_bad(sq - k) +
+                round64_bad(sq + k + 1u);
     }
     CHECK_EQ_INT(fx_isqrt64(0), 0);
     CHECK_EQ_HEX(fx_isqrt64(UINT64_MAX), 0xFFFFFFFFu);
@@ -123,7 +127,8 @@ static void test_isqrt64(void)
     CHECK_EQ_HEX(fx_isqrt64_round(7), 3u);
     CHECK_EQ_INT(bad, 0);
     CHECK_EQ_INT(badr, 0);
-    printf("MEASURED fx_isqrt64: exact (floor), fx_isqrt64_round: <= 0.5 LSB, on %lu inputs\n", total);
+    printf("MEASURED fx_isqrt64: exact (floor), fx_isqrt64_round: <= 0.5 LSB, on %lu inputs\n",
+           total);
 }
 
 /* One Q sqrt over a stride, all small codes and random codes. shift = 16 or 30. */
@@ -138,10 +143,14 @@ static void sweep_q(const char *name, fx_q16_t (*fn)(int32_t), unsigned shift)
     long i;
     for (i = -1; i < (long)(0x80000000u / stride) + n_rand + (long)small; i++) {
         int32_t r;
-        if (i < 0) x = 0x7FFFFFFFu;
-        else if (i < (long)(0x80000000u / stride)) x = (uint32_t)i * stride;
-        else if (i < (long)(0x80000000u / stride) + (long)small) x = (uint32_t)(i - (long)(0x80000000u / stride));
-        else x = (unit_rand32(&st) >> 1) >> (unit_rand32(&st) % 31u);
+        if (i < 0)
+            x = 0x7FFFFFFFu;
+        else if (i < (long)(0x80000000u / stride))
+            x = (uint32_t)i * stride;
+        else if (i < (long)(0x80000000u / stride) + (long)small)
+            x = (uint32_t)(i - (long)(0x80000000u / stride));
+        else
+            x = (unit_rand32(&st) >> 1) >> (unit_rand32(&st) % 31u);
         r = fn((int32_t)x);
         bad += !round_ok((uint64_t)x << shift, (uint64_t)(uint32_t)r);
         fxt_err_add(&err, (double)r - sqrt(ldexp((double)x, (int)shift)), x, r);
@@ -157,15 +166,15 @@ static void test_sqrt_q(void)
     sweep_q("fx_sqrt_q30", fx_sqrt_q30, 30);
     CHECK_EQ_INT(fx_sqrt_q16(FX_Q16_ONE), FX_Q16_ONE);
     CHECK_EQ_INT(fx_sqrt_q16(FX_Q16_INT(4)), FX_Q16_INT(2));
-    CHECK_EQ_INT(fx_sqrt_q16(FX_Q16_INT(2)), 92682);   /* 1.4142136 * 65536 = 92681.9 */
-    CHECK_EQ_INT(fx_sqrt_q16(INT32_MAX), 11863283);    /* 181.019 */
-    CHECK_EQ_INT(fx_sqrt_q16(1), 256);                 /* sqrt(2^-16) = 2^-8 */
-    CHECK_EQ_INT(fx_sqrt_q16(-1), 0);                  /* clamp */
+    CHECK_EQ_INT(fx_sqrt_q16(FX_Q16_INT(2)), 92682); /* 1.4142136 * 65536 = 92681.9 */
+    CHECK_EQ_INT(fx_sqrt_q16(INT32_MAX), 11863283);  /* 181.019 */
+    CHECK_EQ_INT(fx_sqrt_q16(1), 256);               /* sqrt(2^-16) = 2^-8 */
+    CHECK_EQ_INT(fx_sqrt_q16(-1), 0);                /* clamp */
     CHECK_EQ_INT(fx_sqrt_q16(INT32_MIN), 0);
     CHECK_EQ_INT(fx_sqrt_q30(FX_Q30_ONE), FX_Q30_ONE);
     CHECK_EQ_INT(fx_sqrt_q30(FX_Q30_ONE / 4), FX_Q30_HALF);
-    CHECK_EQ_INT(fx_sqrt_q30(INT32_MAX), 1518500250);  /* sqrt(2 - 2^-30) */
-    CHECK_EQ_INT(fx_sqrt_q30(1), 32768);               /* sqrt(2^-30) = 2^-15 */
+    CHECK_EQ_INT(fx_sqrt_q30(INT32_MAX), 1518500250); /* sqrt(2 - 2^-30) */
+    CHECK_EQ_INT(fx_sqrt_q30(1), 32768);              /* sqrt(2^-30) = 2^-15 */
     CHECK_EQ_INT(fx_sqrt_q30(-5), 0);
 }
 

@@ -12,15 +12,25 @@
 #define SWEEP 30000
 #endif
 
-static double q30(int32_t x) { return x / 1073741824.0; }
-static double q16(int32_t x) { return x / 65536.0; }
-static int32_t to_q16(double x) { return (int32_t)lround(x * 65536.0); }
+static double q30(int32_t x)
+{
+    return x / 1073741824.0;
+}
+static double q16(int32_t x)
+{
+    return x / 65536.0;
+}
+static int32_t to_q16(double x)
+{
+    return (int32_t)lround(x * 65536.0);
+}
 
 static double k_exact(double a, double q, unsigned rounds)
 {
     double k = fabs(a) / sqrt(a * a + q * q);
     unsigned i;
-    for (i = 0; i < rounds; i++) k = k + (1.0 - k) * k;
+    for (i = 0; i < rounds; i++)
+        k = k + (1.0 - k) * k;
     return k;
 }
 
@@ -29,7 +39,8 @@ static void test_factor_values(void)
     const int32_t q = to_q16(0.02);
     /* a = Q: K^2 = 1/2. */
     CHECK_NEAR(q30(gpsb_factor(q, q, 0)), sqrt(0.5), 4.0 / 1073741824.0);
-    CHECK_NEAR(q30(gpsb_factor(-q, q, 1)), 1.0 - (1.0 - sqrt(0.5)) * (1.0 - sqrt(0.5)), 9.0 / 1073741824.0);
+    CHECK_NEAR(q30(gpsb_factor(-q, q, 1)), 1.0 - (1.0 - sqrt(0.5)) * (1.0 - sqrt(0.5)),
+               9.0 / 1073741824.0);
     /* Seed 001's curve with Q = 20: at A = 30 the one-round K is 0.972; at A = 5 it is small. */
     CHECK_NEAR(q30(gpsb_factor(to_q16(0.030), q, 1)), 0.9718, 0.0001);
     CHECK(q30(gpsb_factor(to_q16(0.005), q, 1)) < 0.5);
@@ -60,7 +71,8 @@ static void test_factor_sweep(void)
             if (e > worst[r]) worst[r] = e;
         }
     }
-    printf("K error: %.2f / %.2f / %.2f LSB Q30 after 0 / 1 / 2 rounds\n", worst[0], worst[1], worst[2]);
+    printf("K error: %.2f / %.2f / %.2f LSB Q30 after 0 / 1 / 2 rounds\n", worst[0], worst[1],
+           worst[2]);
     CHECK(worst[0] <= 4.0);
     CHECK(worst[1] <= 8.5);
     CHECK(worst[2] <= 17.5);
@@ -83,7 +95,8 @@ static void test_propagation(void)
     {
         /* the same recursion in double */
         double vd = 10.0, kd = k_exact(q16(to_q16(0.1)), q16(to_q16(0.0001)), 1);
-        for (i = 0; i < 77; i++) vd = 10.0 + kd * (vd + q16(to_q16(0.1)) * 9.80665 * 0.013 - 10.0);
+        for (i = 0; i < 77; i++)
+            vd = 10.0 + kd * (vd + q16(to_q16(0.1)) * 9.80665 * 0.013 - 10.0);
         ref = vd;
     }
     CHECK_NEAR(q16(v), ref, 2.0 / 65536);
@@ -123,7 +136,7 @@ static void test_gap_and_errors(void)
     CHECK_ERR(gpsb_step(&s, 0, 0, &v), INC_ERR_RANGE);
     CHECK_ERR(gpsb_step(&s, 0, c.max_step_ns + 1u, &v), INC_ERR_RANGE);
     CHECK_EQ_INT(v, FX_Q16_INT(5)); /* unchanged */
-    for (i = 0; i < 40; i++) { /* 4 s without a fix */
+    for (i = 0; i < 40; i++) {      /* 4 s without a fix */
         err = gpsb_step(&s, 0, 100000000, &v);
     }
     CHECK_ERR(err, INC_ERR_TIMEOUT);
@@ -132,11 +145,19 @@ static void test_gap_and_errors(void)
     CHECK(gpsb_speed(&s, &v));
     CHECK_ERR(gpsb_init(NULL, &c), INC_ERR_NULL);
     CHECK_ERR(gpsb_init(&s, NULL), INC_ERR_NULL);
-    bad = c; bad.q_noise_g = 0;              CHECK_ERR(gpsb_init(&s, &bad), INC_ERR_INVAL);
+    bad = c;
+    bad.q_noise_g = 0;
+    CHECK_ERR(gpsb_init(&s, &bad), INC_ERR_INVAL);
     CHECK_ERR(gpsb_fix(&s, 0), INC_ERR_STATE); /* a failed init leaves it unusable */
-    bad = c; bad.rounds = GPSB_MAX_ROUNDS + 1; CHECK_ERR(gpsb_init(&s, &bad), INC_ERR_INVAL);
-    bad = c; bad.max_step_ns = 2000000000u;    CHECK_ERR(gpsb_init(&s, &bad), INC_ERR_INVAL);
-    bad = c; bad.max_gap_ns = 0;               CHECK_ERR(gpsb_init(&s, &bad), INC_ERR_INVAL);
+    bad = c;
+    bad.rounds = GPSB_MAX_ROUNDS + 1;
+    CHECK_ERR(gpsb_init(&s, &bad), INC_ERR_INVAL);
+    bad = c;
+    bad.max_step_ns = 2000000000u;
+    CHECK_ERR(gpsb_init(&s, &bad), INC_ERR_INVAL);
+    bad = c;
+    bad.max_gap_ns = 0;
+    CHECK_ERR(gpsb_init(&s, &bad), INC_ERR_INVAL);
     CHECK_ERR(gpsb_step(NULL, 0, 1, &v), INC_ERR_NULL);
     CHECK_ERR(gpsb_fix(NULL, 0), INC_ERR_NULL);
     CHECK(!gpsb_speed(NULL, &v));

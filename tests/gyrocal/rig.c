@@ -16,7 +16,8 @@ static void physics(void *ctx, uint64_t t, struct sim_inertial_input *in)
     if (t >= r->motion.from_ns && t < r->motion.to_ns) {
         in->rate_dps[2] += r->motion.rate_dps;
         if (r->motion.vib_dps != 0.0) {
-            const double s = r->motion.vib_dps * sin(2.0 * 3.14159265358979 * 17.0 * (double)t * 1e-9);
+            const double s = r->motion.vib_dps *
+                             sin(2.0 * 3.14159265358979 * 17.0 * (double)t * 1e-9);
             in->rate_dps[0] += s;
             in->rate_dps[1] += s;
             in->rate_dps[2] += s;
@@ -65,9 +66,9 @@ static void error_apply(void *ctx, const struct sim_inertial_input *in,
         }
         r->hist_t[r->hist_n] = t_ns;
         for (i = 0; i < 3u; i++) {
-            r->hist_c[3u * r->hist_n + i] =
-                (r->hist_n > 0u ? r->hist_c[3u * (r->hist_n - 1u) + i] : 0.0) +
-                sim_noise_bias_now(&r->noise, SIM_NOISE_GYRO(i));
+            r->hist_c[3u * r->hist_n + i] = (r->hist_n > 0u ? r->hist_c[3u * (r->hist_n - 1u) + i]
+                                                            : 0.0) +
+                                            sim_noise_bias_now(&r->noise, SIM_NOISE_GYRO(i));
         }
         r->hist_n++;
     }
@@ -112,8 +113,8 @@ int rig_bias_window(uint64_t t1, uint64_t t2, double out[3])
     return 0;
 }
 
-static int spy_transfer(void *ctx, struct spi_dev *dev, const uint16_t *tx, uint16_t *rx,
-                        size_t n, enum spi_cs_policy cs)
+static int spy_transfer(void *ctx, struct spi_dev *dev, const uint16_t *tx, uint16_t *rx, size_t n,
+                        enum spi_cs_policy cs)
 {
     struct rig *r = ctx;
     size_t i;

@@ -23,16 +23,16 @@
 #define RIG_CMD_LOG 32u
 
 struct rig_motion {
-    uint64_t from_ns, to_ns;   /* rotation about z during [from, to) */
+    uint64_t from_ns, to_ns; /* rotation about z during [from, to) */
     double rate_dps;
-    double vib_dps;            /* vibration amplitude on all gyros at 17 Hz during [from, to) */
+    double vib_dps; /* vibration amplitude on all gyros at 17 Hz during [from, to) */
 };
 
 struct rig_temp {
-    double start_c;            /* temperature at t0 */
-    double rise_c;             /* exponential warm-up: + rise (1 - exp(-(t - t0) / tau)) */
+    double start_c; /* temperature at t0 */
+    double rise_c;  /* exponential warm-up: + rise (1 - exp(-(t - t0) / tau)) */
     double tau_s;
-    double ramp_c_per_s;       /* linear ramp from ramp_from_ns on */
+    double ramp_c_per_s; /* linear ramp from ramp_from_ns on */
     uint64_t ramp_from_ns;
     uint64_t t0_ns;
 };
@@ -44,8 +44,8 @@ struct rig {
     struct sim_noise noise;
     struct sim_error_model err_hook;
     struct sim_physics phys;
-    struct spi_bus spy;                  /* records GLOB_CMD writes, passes everything on */
-    uint16_t cmd_log[RIG_CMD_LOG];       /* DIN words 0xBExx seen, in order */
+    struct spi_bus spy;            /* records GLOB_CMD writes, passes everything on */
+    uint16_t cmd_log[RIG_CMD_LOG]; /* DIN words 0xBExx seen, in order */
     unsigned cmd_count;
     struct adis_imu imu;
     struct adis_imu_cfg cfg;
@@ -55,14 +55,14 @@ struct rig {
     struct rig_temp temp;
     /* bias accumulation */
     bool acc_on;
-    double acc_sum[3];       /* achieved bias: error model + offset register + correction */
-    double acc_sum_reg[3];   /* the same without the processor-side correction */
+    double acc_sum[3];     /* achieved bias: error model + offset register + correction */
+    double acc_sum_reg[3]; /* the same without the processor-side correction */
     uint64_t acc_n;
     /* history of the error model's correlated bias (rig_history) */
     bool hist_on;
     size_t hist_n, hist_cap;
-    uint64_t *hist_t;        /* sample times */
-    double *hist_c;          /* 3 cumulative sums per sample */
+    uint64_t *hist_t; /* sample times */
+    double *hist_c;   /* 3 cumulative sums per sample */
 };
 
 extern struct rig rig;

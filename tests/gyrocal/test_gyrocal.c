@@ -21,14 +21,14 @@
 #include <string.h>
 
 #if UNIT_REDUCED
-#define MANUAL_N 1638u        /* 2 s instead of 100 s */
-#define THERMAL_AVG 82u       /* 0.1 s points, 1 s window */
+#define MANUAL_N 1638u  /* 2 s instead of 100 s */
+#define THERMAL_AVG 82u /* 0.1 s points, 1 s window */
 #define THERMAL_SPAN 10u
 #define VERIFY_N 819u
-#define WARM_TAU_S 10.0       /* the 1 s thermal window needs a faster warm-up to notice it */
+#define WARM_TAU_S 10.0 /* the 1 s thermal window needs a faster warm-up to notice it */
 #else
 #define MANUAL_N GYROCAL_MANUAL_SAMPLES
-#define THERMAL_AVG 819u      /* the defaults: 1 s points, 30 s window */
+#define THERMAL_AVG 819u /* the defaults: 1 s points, 30 s window */
 #define THERMAL_SPAN 30u
 #define VERIFY_N 1638u
 #define WARM_TAU_S 60.0
@@ -80,7 +80,8 @@ static void offsets_now(int32_t off[3])
 {
     unsigned i;
     for (i = 0; i < 3u; i++) {
-        off[i] = adis_sign_extend(sim_adis_imu_peek(&rig.part, (uint8_t)(ADIS_IMU_REG_XGYRO_OFF + 2u * i)), 13);
+        off[i] = adis_sign_extend(
+            sim_adis_imu_peek(&rig.part, (uint8_t)(ADIS_IMU_REG_XGYRO_OFF + 2u * i)), 13);
     }
 }
 
@@ -94,11 +95,12 @@ static uint16_t flash_count(void)
 static void test_default_cfg(void)
 {
     struct gyrocal_cfg c;
-    CHECK_OK(gyrocal_default_cfg(&c, adis_imu_variant_info(ADIS_IMU_ADIS16364), ADIS_IMU_RANGE_300));
+    CHECK_OK(
+        gyrocal_default_cfg(&c, adis_imu_variant_info(ADIS_IMU_ADIS16364), ADIS_IMU_RANGE_300));
     CHECK_EQ_INT(c.still.window, 819);
-    CHECK_EQ_INT(c.still.gyro_var_max, 519);   /* (1 deg/s / 0.05)^2 x 1.2967, +1 */
-    CHECK_EQ_INT(c.still.accel_var_max, 130);  /* (10 mg / 1 mg)^2 x 1.2967, +1 */
-    CHECK_EQ_INT(c.still.gyro_mean_max, 100);  /* 5 deg/s */
+    CHECK_EQ_INT(c.still.gyro_var_max, 519);  /* (1 deg/s / 0.05)^2 x 1.2967, +1 */
+    CHECK_EQ_INT(c.still.accel_var_max, 130); /* (10 mg / 1 mg)^2 x 1.2967, +1 */
+    CHECK_EQ_INT(c.still.gyro_mean_max, 100); /* 5 deg/s */
     CHECK_EQ_INT(c.still.accel_one_g, 1000);
     CHECK_EQ_INT(c.still.accel_norm_tol, 100);
     CHECK_EQ_INT(c.still.accel_drift_max, 3);
@@ -110,18 +112,20 @@ static void test_default_cfg(void)
     CHECK_EQ_INT(c.adev_q16[GYROCAL_AUTONULL], 5243);
     CHECK_EQ_INT(c.adev_q16[GYROCAL_PRECISION], 524);
     CHECK_EQ_INT(c.adev_q16[GYROCAL_MANUAL], 393);
-    CHECK_OK(gyrocal_default_cfg(&c, adis_imu_variant_info(ADIS_IMU_ADIS16400), ADIS_IMU_RANGE_300));
-    CHECK_EQ_INT(c.still.accel_var_max, 12);   /* 3.333 mg LSB */
+    CHECK_OK(
+        gyrocal_default_cfg(&c, adis_imu_variant_info(ADIS_IMU_ADIS16400), ADIS_IMU_RANGE_300));
+    CHECK_EQ_INT(c.still.accel_var_max, 12); /* 3.333 mg LSB */
     CHECK_EQ_INT(c.still.accel_one_g, 300);
     CHECK_EQ_INT(c.still.accel_norm_tol, 30);
     CHECK_EQ_INT(c.still.accel_drift_max, 1);
     CHECK_OK(gyrocal_default_cfg(&c, adis_imu_variant_info(ADIS_IMU_ADIS16362), ADIS_IMU_RANGE_75));
-    CHECK_EQ_INT(c.still.gyro_var_max, 8299);  /* 0.0125 deg/s LSB */
+    CHECK_EQ_INT(c.still.gyro_var_max, 8299); /* 0.0125 deg/s LSB */
     CHECK_EQ_INT(c.still.gyro_mean_max, 400);
     CHECK_EQ_INT(c.still.accel_one_g, 3003);
     CHECK_EQ_INT(c.still.accel_drift_max, 10);
-    CHECK_ERR(gyrocal_default_cfg(&c, adis_imu_variant_info(ADIS_IMU_ADIS16362), (enum adis_imu_range)3),
-              INC_ERR_INVAL);
+    CHECK_ERR(
+        gyrocal_default_cfg(&c, adis_imu_variant_info(ADIS_IMU_ADIS16362), (enum adis_imu_range)3),
+        INC_ERR_INVAL);
     CHECK_ERR(gyrocal_default_cfg(&c, NULL, ADIS_IMU_RANGE_300), INC_ERR_NULL);
 }
 
@@ -155,7 +159,7 @@ static void test_init_rejects(void)
     CHECK_ERR(gyrocal_init(&g, &rig.imu, &c), INC_ERR_INVAL);
     CHECK_ERR(gyrocal_run(&rig.gc, (enum gyrocal_mode)7, &res), INC_ERR_INVAL);
     memset(&s, 0, sizeof(s));
-    CHECK_ERR(gyrocal_feed(&rig.gc, &s), INC_ERR_STALE);  /* no valid channel */
+    CHECK_ERR(gyrocal_feed(&rig.gc, &s), INC_ERR_STALE); /* no valid channel */
     CHECK(strcmp(gyrocal_reason_text(GYROCAL_REFUSED_MOVING), "refused: the part is moving") == 0);
     CHECK(strcmp(gyrocal_reason_text((enum gyrocal_reason)99), "unknown") == 0);
 }
@@ -163,9 +167,9 @@ static void test_init_rejects(void)
 static void test_correct_q16(void)
 {
     struct gyrocal_correction c = {{1, -3, 32767}, true};
-    CHECK_EQ_INT(gyrocal_correct_q16(&c, 0, 0), 205);          /* 204.8 */
+    CHECK_EQ_INT(gyrocal_correct_q16(&c, 0, 0), 205);           /* 204.8 */
     CHECK_EQ_INT(gyrocal_correct_q16(&c, 1, 1000), 1000 - 614); /* -614.4 */
-    CHECK_EQ_INT(gyrocal_correct_q16(&c, 2, 0), 6710682);      /* 102.4 deg/s - 1/320 */
+    CHECK_EQ_INT(gyrocal_correct_q16(&c, 2, 0), 6710682);       /* 102.4 deg/s - 1/320 */
     CHECK_EQ_INT(gyrocal_correct_q16(&c, 2, INT32_MAX), INT32_MAX);
     CHECK_EQ_INT(gyrocal_correct_q16(&c, 3, 77), 77);
     c.valid = false;
@@ -184,7 +188,7 @@ static void test_refuses_moving(void)
     CHECK(gyrocal_at_rest(&rig.gc));
     rig.motion.from_ns = rig_now();
     rig.motion.to_ns = UINT64_MAX;
-    rig.motion.rate_dps = 10.0;                 /* steady 10 deg/s about z */
+    rig.motion.rate_dps = 10.0; /* steady 10 deg/s about z */
     REQUIRE(gyrocal_monitor(&rig.gc, 2u * 819u) == INC_OK);
     CHECK(!gyrocal_at_rest(&rig.gc));
     CHECK(rig.gc.still.last.why & STILL_WHY_GYRO_MEAN);
@@ -260,11 +264,11 @@ static void test_autonull(void)
     CHECK_OK(gyrocal_run(&rig.gc, GYROCAL_AUTONULL, &res));
     CHECK_EQ_INT(res.reason, GYROCAL_DONE);
     CHECK_EQ_INT(rig_cmd_seen(0xBE01), 1);
-    CHECK_EQ_INT(rig_cmd_seen(0xBE08), 1);       /* flash update after the verification */
+    CHECK_EQ_INT(rig_cmd_seen(0xBE08), 1); /* flash update after the verification */
     CHECK_EQ_INT(flash_count(), fc + 1u);
-    CHECK_EQ_HEX(rig.imu.sens_avg, 0x0402u);     /* the user's filter is back */
+    CHECK_EQ_HEX(rig.imu.sens_avg, 0x0402u); /* the user's filter is back */
     CHECK_EQ_HEX(rig.imu.smpl_prd, 0x0001u);
-    CHECK_EQ_INT(res.residual_q16[0], 5248);     /* sqrt(5243^2 + 819^2 / 12) */
+    CHECK_EQ_INT(res.residual_q16[0], 5248); /* sqrt(5243^2 + 819^2 / 12) */
     rig_bias_mean(0.15, b);
     for (i = 0; i < 3u; i++) {
         CHECK_NEAR(res.new_offset[i], -80.0 * bias3[i], 80.0 * 4.0 * sd + 0.5);
@@ -284,7 +288,7 @@ static void test_precision(void)
     REQUIRE(setup(SIM_ADIS16405, bias3, NULL) == INC_OK);
     CHECK_OK(gyrocal_run(&rig.gc, GYROCAL_PRECISION, &res));
     CHECK_EQ_INT(rig_cmd_seen(0xBE10), 1);
-    CHECK_EQ_INT(res.residual_q16[1], 575);      /* sqrt(524^2 + 819^2 / 12) */
+    CHECK_EQ_INT(res.residual_q16[1], 575); /* sqrt(524^2 + 819^2 / 12) */
     CHECK(res.t_end_ns - res.t_start_ns >= 30000000000ull);
     rig_bias_mean(1.0, b);
     for (i = 0; i < 3u; i++) {
@@ -308,8 +312,8 @@ static void test_manual(void)
     CHECK_OK(gyrocal_run(&rig.gc, GYROCAL_MANUAL, &res));
     CHECK_EQ_INT(res.samples, MANUAL_N);
     CHECK_EQ_INT(res.missed, 0);
-    CHECK_EQ_INT(rig_cmd_seen(0xBE08), 1);       /* GLOB_CMD[3]: bit 3 */
-    CHECK_EQ_INT(rig_cmd_seen(0xBE04), 0);       /* never seed 003's typo word (AUX DAC latch) */
+    CHECK_EQ_INT(rig_cmd_seen(0xBE08), 1); /* GLOB_CMD[3]: bit 3 */
+    CHECK_EQ_INT(rig_cmd_seen(0xBE04), 0); /* never seed 003's typo word (AUX DAC latch) */
     CHECK_EQ_INT(flash_count(), fc + 1u);
     c = gyrocal_correction_get(&rig.gc);
     CHECK(c.valid);
@@ -320,7 +324,7 @@ static void test_manual(void)
         CHECK(c.corr[i] >= -2 && c.corr[i] <= 2); /* what the 0.0125 register could not take */
         CHECK_EQ_INT(res.proc_corr[i], c.corr[i]);
     }
-    rig_bias_mean(1.0, b);                       /* register + processor-side correction */
+    rig_bias_mean(1.0, b); /* register + processor-side correction */
     for (i = 0; i < 3u; i++) {
         CHECK_NEAR(b[i], 0.0, 4.0 * se + 1.0 / 640.0);
     }
@@ -348,7 +352,7 @@ static void test_manual_processor_only(void)
     offsets_now(before);
     CHECK_OK(gyrocal_run(&rig.gc, GYROCAL_MANUAL, &res));
     offsets_now(after);
-    CHECK(memcmp(before, after, sizeof(before)) == 0);   /* the part is left alone */
+    CHECK(memcmp(before, after, sizeof(before)) == 0); /* the part is left alone */
     CHECK_EQ_INT(rig_cmd_seen(0xBE08), 0);
     for (i = 0; i < 3u; i++) {
         CHECK_NEAR(res.proc_corr[i], -320.0 * bias3[i], 320.0 * (4.0 * se) + 1.0);
@@ -423,11 +427,11 @@ static void test_motion_during_manual(void)
     REQUIRE(setup(SIM_ADIS16364, bias3, NULL) == INC_OK);
     offsets_now(before);
     rig.motion.from_ns = rig_now() + (uint64_t)(MANUAL_N / FS * 0.5e9);
-    rig.motion.to_ns = rig.motion.from_ns + 300000000u;   /* 0.3 s at 30 deg/s: 9 deg */
+    rig.motion.to_ns = rig.motion.from_ns + 300000000u; /* 0.3 s at 30 deg/s: 9 deg */
     rig.motion.rate_dps = 30.0;
     CHECK_ERR(gyrocal_run(&rig.gc, GYROCAL_MANUAL, &res), INC_ERR_MOTION);
     CHECK_EQ_INT(res.reason, GYROCAL_ABORTED_MOTION);
-    CHECK(res.samples < MANUAL_N);                       /* stopped at the first bad window */
+    CHECK(res.samples < MANUAL_N); /* stopped at the first bad window */
     offsets_now(after);
     CHECK(memcmp(before, after, sizeof(before)) == 0);
     CHECK_EQ_INT(res.new_offset[1], before[1]);
@@ -442,7 +446,7 @@ static void test_motion_during_autonull(void)
     int32_t before[3], after[3];
     REQUIRE(setup(SIM_ADIS16364, bias3, NULL) == INC_OK);
     offsets_now(before);
-    rig.motion.from_ns = rig_now() + 50000000u;            /* in the 200 ms fill */
+    rig.motion.from_ns = rig_now() + 50000000u; /* in the 200 ms fill */
     rig.motion.to_ns = rig.motion.from_ns + 100000000u;
     rig.motion.rate_dps = 20.0;
     CHECK_ERR(gyrocal_run(&rig.gc, GYROCAL_AUTONULL, &res), INC_ERR_MOTION);
@@ -484,7 +488,7 @@ static void test_thermal_during_manual(void)
     REQUIRE(setup(SIM_ADIS16364, bias3, NULL) == INC_OK);
     offsets_now(before);
     rig.temp.ramp_from_ns = rig_now() + (uint64_t)(MANUAL_N / FS * 0.3e9);
-    rig.temp.ramp_c_per_s = 0.5;                          /* 0.5 C/s: 4 LSB per second */
+    rig.temp.ramp_c_per_s = 0.5; /* 0.5 C/s: 4 LSB per second */
     CHECK_ERR(gyrocal_run(&rig.gc, GYROCAL_MANUAL, &res), INC_ERR_THERMAL);
     CHECK_EQ_INT(res.reason, GYROCAL_ABORTED_THERMAL);
     offsets_now(after);

@@ -94,7 +94,8 @@ static void test_irq_wait(void)
     /* Errors */
     CHECK_ERR(hal_irq_attach(&b.hal, 31, HAL_EDGE_RISING, on_irq, NULL), INC_ERR_INVAL);
     CHECK_ERR(hal_irq_attach(&b.hal, 200, HAL_EDGE_RISING, on_irq, NULL), INC_ERR_INVAL);
-    CHECK_ERR(hal_irq_attach(&b.hal, SIM_BOARD_DR(1), (enum hal_edge)0, on_irq, NULL), INC_ERR_INVAL);
+    CHECK_ERR(hal_irq_attach(&b.hal, SIM_BOARD_DR(1), (enum hal_edge)0, on_irq, NULL),
+              INC_ERR_INVAL);
 }
 
 static void test_critical_section_defers(void)

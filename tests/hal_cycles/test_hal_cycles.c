@@ -10,18 +10,31 @@
 #include "unit.h"
 
 static const uint32_t clocks[] = {
-    HAL_CYC_HZ_MIN, 1000003u, 8000000u, 16000000u, 25000000u, 48000000u, 72000000u,
-    120000000u, 168000000u, 180000000u, 216000000u, 480000000u, 999999999u, HAL_CYC_HZ_MAX,
+    HAL_CYC_HZ_MIN, 1000003u,   8000000u,   16000000u,  25000000u,  48000000u,  72000000u,
+    120000000u,     168000000u, 180000000u, 216000000u, 480000000u, 999999999u, HAL_CYC_HZ_MAX,
 };
 
 static const uint64_t cycle_counts[] = {
-    0u, 1u, 2u, 3u, 999u, 1000u, 0xFFFFFFu, 0x1000000u, 0xFFFFFFFFu, 0x100000000ull,
-    0x100000001ull, 0x123456789ull, (1ull << 40) + 12345u, (1ull << 48) - 1u, 1ull << 53,
+    0u,
+    1u,
+    2u,
+    3u,
+    999u,
+    1000u,
+    0xFFFFFFu,
+    0x1000000u,
+    0xFFFFFFFFu,
+    0x100000000ull,
+    0x100000001ull,
+    0x123456789ull,
+    (1ull << 40) + 12345u,
+    (1ull << 48) - 1u,
+    1ull << 53,
 };
 
 static const uint32_t delays_ns[] = {
-    0u, 1u, 2u, 39u, 40u, 41u, 100u, 999u, 1000u, 1001u, 65535u, 1000000u, 123456789u,
-    1000000000u, 0xFFFFFFFFu,
+    0u,    1u,    2u,     39u,      40u,        41u,         100u,        999u,
+    1000u, 1001u, 65535u, 1000000u, 123456789u, 1000000000u, 0xFFFFFFFFu,
 };
 
 /* floor(cycles * 1e9 / hz), exact: split cycles into whole seconds and a remainder. */
@@ -57,14 +70,14 @@ static void test_factors(void)
     struct hal_cyc_conv c;
     REQUIRE(hal_cyc_init(&c, 25000000u) == 0);
     CHECK_EQ_INT(c.hz, 25000000);
-    CHECK_EQ_HEX(c.ns_per_cyc_q32, 40ull << 32);          /* 40 ns per cycle, exactly */
-    CHECK_EQ_HEX(c.cyc_per_ns_q32, 107374183u);           /* ceil(0.025 * 2^32) */
+    CHECK_EQ_HEX(c.ns_per_cyc_q32, 40ull << 32); /* 40 ns per cycle, exactly */
+    CHECK_EQ_HEX(c.cyc_per_ns_q32, 107374183u);  /* ceil(0.025 * 2^32) */
     REQUIRE(hal_cyc_init(&c, HAL_CYC_HZ_MAX) == 0);
     CHECK_EQ_HEX(c.ns_per_cyc_q32, 1ull << 32);
     CHECK_EQ_HEX(c.cyc_per_ns_q32, 1ull << 32);
     REQUIRE(hal_cyc_init(&c, 168000000u) == 0);
-    CHECK_EQ_HEX(c.ns_per_cyc_q32, 25565281523ull);       /* floor(1e9 * 2^32 / 168e6) */
-    CHECK_EQ_HEX(c.cyc_per_ns_q32, 721554506u);           /* ceil(168e6 * 2^32 / 1e9) */
+    CHECK_EQ_HEX(c.ns_per_cyc_q32, 25565281523ull); /* floor(1e9 * 2^32 / 168e6) */
+    CHECK_EQ_HEX(c.cyc_per_ns_q32, 721554506u);     /* ceil(168e6 * 2^32 / 1e9) */
 }
 
 static void test_mul_q32(void)

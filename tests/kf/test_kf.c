@@ -13,9 +13,9 @@
 #include "inclino/kf.h"
 #include "unit.h"
 
-#define ONE KF_P_ONE_Q16              /* 1 unit^2 in P format (Q16 states) */
-#define Q16(v) ((int32_t)((v) * 65536)) /* exact for the short fractions used here */
-#define XI(v) ((int64_t)((v) * 4294967296.0)) /* internal state of a Q16 value: 2^32 */
+#define ONE KF_P_ONE_Q16                    /* 1 unit^2 in P format (Q16 states) */
+#define Q16(v) ((int32_t)((v)*65536))       /* exact for the short fractions used here */
+#define XI(v) ((int64_t)((v)*4294967296.0)) /* internal state of a Q16 value: 2^32 */
 
 /* Scalar filter: P0 = 1, A = 1, Q = 1 -> P- = 2; H = 1, R = 2 -> S = 4, K = 1/2;
  * x0 = 0, z = 10 -> x = 5; Joseph P = (1/2)^2 2 + (1/2)^2 2 = 1. */
@@ -137,7 +137,8 @@ static void test_n3_n4_by_hand(void)
         int64_t p0[16] = {0};
         fx_q30_t h[4] = {FX_Q30_ONE, FX_Q30_ONE, 0, 0};
         unsigned i;
-        for (i = 0; i < n; i++) p0[i * n + i] = ONE;
+        for (i = 0; i < n; i++)
+            p0[i * n + i] = ONE;
         REQUIRE(kf_init(&f, n, NULL, p0) == INC_OK);
         CHECK_OK(kf_update_row(&f, h, 2 * ONE, Q16(8)));
         CHECK_EQ_INT(kf_x(&f, 0), Q16(2));
@@ -303,7 +304,7 @@ static void test_saturation(void)
     struct kf f;
     const int64_t p0 = KF_P_MAX / 2, q = 0;
     const fx_q30_t a = FX_Q30_ONE + FX_Q30_HALF; /* 1.5 */
-    const int32_t x0 = INT32_MAX / 4 * 3; /* times 1.5 leaves the int32 range */
+    const int32_t x0 = INT32_MAX / 4 * 3;        /* times 1.5 leaves the int32 range */
     struct kf_model m = {1, 0, &a, NULL, &q};
     REQUIRE(kf_init(&f, 1, &x0, &p0) == INC_OK);
     CHECK_ERR(kf_predict(&f, &m, NULL), INC_ERR_OVERFLOW);
@@ -324,7 +325,8 @@ static void test_saturation(void)
     CHECK_EQ_INT(kf_var_from_sigma(Q16(2)), 4 * ONE);
     CHECK_EQ_INT(kf_var_from_sigma(-Q16(2)), 4 * ONE);
     CHECK_EQ_INT(kf_var_from_sigma(1 << 22), KF_P_MAX);
-    CHECK_EQ_INT(kf_var_from_sigma((1 << 22) - 1), ((int64_t)((1 << 22) - 1) * ((1 << 22) - 1)) << 16);
+    CHECK_EQ_INT(kf_var_from_sigma((1 << 22) - 1), ((int64_t)((1 << 22) - 1) * ((1 << 22) - 1))
+                                                       << 16);
 }
 
 /* An update whose innovation variance rounds to <= 0 needs a P that is not positive

@@ -49,7 +49,7 @@ static void test_dz_window4(void)
         CHECK_EQ_INT(st.dz, dz[i]);
         CHECK_EQ_INT(est, z[i]); /* R = 0 */
         if (i > 0) {
-            CHECK_EQ_INT(st.q, U);    /* D = 0: Q = C */
+            CHECK_EQ_INT(st.q, U); /* D = 0: Q = C */
             CHECK_EQ_INT(st.r, 0);
             CHECK_EQ_INT(st.k, FX_Q30_ONE);
         }
@@ -185,11 +185,14 @@ static void test_six_axes(void)
     struct kf_adapt_config c[KF_ADAPT_AXES];
     int32_t z[KF_ADAPT_AXES] = {1, 2, 3, 4, 5, 6}, est[KF_ADAPT_AXES];
     unsigned i;
-    for (i = 0; i < KF_ADAPT_AXES; i++) c[i] = cfg(2 + i, U, U, U, 0, U);
+    for (i = 0; i < KF_ADAPT_AXES; i++)
+        c[i] = cfg(2 + i, U, U, U, 0, U);
     REQUIRE(kf_adapt6_init(&f, c) == INC_OK);
     CHECK_OK(kf_adapt6_process(&f, z, 0x3Fu, est));
-    for (i = 0; i < KF_ADAPT_AXES; i++) CHECK_EQ_INT(est[i], z[i]);
-    for (i = 0; i < KF_ADAPT_AXES; i++) z[i] += 100;
+    for (i = 0; i < KF_ADAPT_AXES; i++)
+        CHECK_EQ_INT(est[i], z[i]);
+    for (i = 0; i < KF_ADAPT_AXES; i++)
+        z[i] += 100;
     CHECK_OK(kf_adapt6_process(&f, z, 0x3Fu & ~(1u << 2), est)); /* axis 2 coasts */
     CHECK_EQ_INT(est[2], 3);
     CHECK(est[0] > 1 && est[0] <= 101);

@@ -76,26 +76,31 @@ static void model_predict(struct mdl *s, const fx_q30_t *a, const fx_q30_t *b, u
     int64_t xn[4], am[4][4];
     for (i = 0; i < n; i++) {
         i128 acc = 0;
-        for (j = 0; j < n; j++) acc += (i128)a[i * n + j] * s->x[j];
-        for (j = 0; j < nu; j++) acc += (i128)b[i * nu + j] * ((i128)u[j] * 65536);
+        for (j = 0; j < n; j++)
+            acc += (i128)a[i * n + j] * s->x[j];
+        for (j = 0; j < nu; j++)
+            acc += (i128)b[i * nu + j] * ((i128)u[j] * 65536);
         xn[i] = clampx(sat64(rsh(acc, 30)));
     }
     for (i = 0; i < n; i++)
         for (j = 0; j < n; j++) {
             i128 acc = 0;
-            for (k = 0; k < n; k++) acc += (i128)a[i * n + k] * s->p[k][j];
+            for (k = 0; k < n; k++)
+                acc += (i128)a[i * n + k] * s->p[k][j];
             am[i][j] = sat64(rsh(acc, 30));
         }
     for (i = 0; i < n; i++)
         for (j = i; j < n; j++) {
             i128 acc = 0;
             int64_t v;
-            for (k = 0; k < n; k++) acc += (i128)a[j * n + k] * am[i][k];
+            for (k = 0; k < n; k++)
+                acc += (i128)a[j * n + k] * am[i][k];
             v = clampp(clampp(sat64(rsh(acc, 30))) + q[i * n + j]);
             if (i == j && v < 0) v = 0;
             s->p[i][j] = s->p[j][i] = v;
         }
-    for (i = 0; i < n; i++) s->x[i] = xn[i];
+    for (i = 0; i < n; i++)
+        s->x[i] = xn[i];
 }
 
 static void model_update(struct mdl *s, const fx_q30_t *h, int64_t r, int32_t z)
@@ -105,21 +110,25 @@ static void model_update(struct mdl *s, const fx_q30_t *h, int64_t r, int32_t z)
     i128 acc;
     for (i = 0; i < n; i++) {
         acc = 0;
-        for (j = 0; j < n; j++) acc += (i128)h[j] * s->p[i][j];
+        for (j = 0; j < n; j++)
+            acc += (i128)h[j] * s->p[i][j];
         v[i] = sat64(rsh(acc, 30));
     }
     acc = 0;
-    for (i = 0; i < n; i++) acc += (i128)h[i] * v[i];
+    for (i = 0; i < n; i++)
+        acc += (i128)h[i] * v[i];
     hv = clampp(sat64(rsh(acc, 30)));
     sv = hv + r;
     acc = 0;
-    for (i = 0; i < n; i++) acc += (i128)h[i] * s->x[i];
+    for (i = 0; i < n; i++)
+        acc += (i128)h[i] * s->x[i];
     y = ((int64_t)z * 65536) - sat64(rsh(acc, 30));
     for (i = 0; i < n; i++) {
         k[i] = sat64(rdiv((i128)v[i] * 1073741824, sv));
         w[i] = sat64(rsh((i128)sv * k[i], 30));
     }
-    for (i = 0; i < n; i++) s->x[i] = clampx(sat64((i128)s->x[i] + sat64(rsh((i128)k[i] * y, 30))));
+    for (i = 0; i < n; i++)
+        s->x[i] = clampx(sat64((i128)s->x[i] + sat64(rsh((i128)k[i] * y, 30))));
     for (i = 0; i < n; i++)
         for (j = i; j < n; j++) {
             i128 t = (i128)w[i] * k[j] - (i128)k[i] * v[j] - (i128)v[i] * k[j];
@@ -134,11 +143,13 @@ static void rnd_psd(unsigned n, int64_t *m, unsigned lbits)
 {
     int64_t l[16] = {0};
     unsigned i, j, k;
-    for (i = 0; i < n * n; i++) l[i] = rnd_range(-((int64_t)1 << lbits), (int64_t)1 << lbits);
+    for (i = 0; i < n * n; i++)
+        l[i] = rnd_range(-((int64_t)1 << lbits), (int64_t)1 << lbits);
     for (i = 0; i < n; i++)
         for (j = 0; j < n; j++) {
             int64_t s = 0;
-            for (k = 0; k < n; k++) s += l[i * n + k] * l[j * n + k];
+            for (k = 0; k < n; k++)
+                s += l[i * n + k] * l[j * n + k];
             m[i * n + j] = s;
         }
 }
@@ -159,7 +170,8 @@ static void test_kf_bit_exact(void)
             for (j = 0; j < n; j++)
                 a[i * n + j] = (fx_q30_t)(i == j ? rnd_range(0x30000000, 0x40000000)
                                                  : rnd_range(-0x04000000, 0x04000000));
-        for (i = 0; i < n * 4; i++) b[i] = (fx_q30_t)rnd_range(-0x01000000, 0x01000000);
+        for (i = 0; i < n * 4; i++)
+            b[i] = (fx_q30_t)rnd_range(-0x01000000, 0x01000000);
         for (i = 0; i < n; i++) {
             h[i] = (fx_q30_t)rnd_range(-0x40000000, 0x40000000);
             x0[i] = (int32_t)rnd_range(-0x01000000, 0x01000000);
@@ -171,16 +183,19 @@ static void test_kf_bit_exact(void)
         s.n = n;
         for (i = 0; i < n; i++) {
             s.x[i] = (int64_t)x0[i] * 65536;
-            for (j = 0; j < n; j++) s.p[i][j] = p0[i * n + j];
+            for (j = 0; j < n; j++)
+                s.p[i][j] = p0[i * n + j];
         }
         for (step = 0; step < 50; step++) {
             int32_t u[4], z;
             int perr;
             struct kf_model m = {(uint8_t)n, (uint8_t)nu, a, b, q};
             int64_t pin[4][4];
-            for (i = 0; i < 4; i++) u[i] = (int32_t)rnd_range(-0x100000, 0x100000);
+            for (i = 0; i < 4; i++)
+                u[i] = (int32_t)rnd_range(-0x100000, 0x100000);
             for (i = 0; i < n; i++)
-                for (j = 0; j < n; j++) pin[i][j] = f.p[i][j];
+                for (j = 0; j < n; j++)
+                    pin[i][j] = f.p[i][j];
             perr = kf_predict(&f, &m, u);
             /* Saturation (INC_ERR_OVERFLOW) is part of the contract and of the model. */
             if (perr != INC_OK && perr != INC_ERR_OVERFLOW) mismatches++;
@@ -193,7 +208,8 @@ static void test_kf_bit_exact(void)
                     unsigned k, l;
                     double sa = 0, err, bound;
                     for (k = 0; k < n; k++)
-                        for (l = 0; l < n; l++) e += (i128)a[i * n + k] * pin[k][l] * a[j * n + l];
+                        for (l = 0; l < n; l++)
+                            e += (i128)a[i * n + k] * pin[k][l] * a[j * n + l];
                     double sb = 0;
                     /* the stored (i, j) is (min, max) mirrored: its second rounding used the row
                      * max(i, j) of A; the bound uses the larger row sum of the two */
@@ -224,7 +240,8 @@ static void test_kf_bit_exact(void)
     CHECK(worst_pred <= 1.0);
     CHECK(saturated < steps / 10);
     printf("kf: %u steps bit-exact (%u calls saturated); A P A' + Q worst error = %.3f of its "
-           "bound\n", steps, saturated, worst_pred);
+           "bound\n",
+           steps, saturated, worst_pred);
 }
 
 /* The Joseph update against exact math: with the exact gain v / s, P+ = P - v v' / s. The
@@ -240,19 +257,23 @@ static void test_joseph_vs_exact(void)
         int64_t p0[16], r, v[4], pmax = 1, s;
         fx_q30_t h[4];
         rnd_psd(n, p0, 10 + trial % 19);
-        for (i = 0; i < n; i++) h[i] = (fx_q30_t)rnd_range(-0x40000000, 0x40000000);
+        for (i = 0; i < n; i++)
+            h[i] = (fx_q30_t)rnd_range(-0x40000000, 0x40000000);
         r = rnd_range(1, (int64_t)1 << (5 + trial % 50));
         REQUIRE(kf_init(&f, n, NULL, p0) == INC_OK);
-        for (i = 0; i < n * n; i++) if (p0[i] > pmax) pmax = p0[i];
+        for (i = 0; i < n * n; i++)
+            if (p0[i] > pmax) pmax = p0[i];
         /* exact v and s of the stored P (v rounded like the firmware: it is a stored operand) */
         for (i = 0; i < n; i++) {
             i128 acc = 0;
-            for (j = 0; j < n; j++) acc += (i128)h[j] * p0[i * n + j];
+            for (j = 0; j < n; j++)
+                acc += (i128)h[j] * p0[i * n + j];
             v[i] = (int64_t)rsh(acc, 30);
         }
         {
             i128 acc = 0;
-            for (i = 0; i < n; i++) acc += (i128)h[i] * v[i];
+            for (i = 0; i < n; i++)
+                acc += (i128)h[i] * v[i];
             s = (int64_t)rsh(acc, 30) + r;
         }
         if (kf_update_row(&f, h, r, 0) != INC_OK) bad++;
@@ -294,7 +315,10 @@ static void test_adapt_bit_exact(void)
             struct kf_adapt_step st;
             if (kf_adapt_process(&f, z, &est, &st) != INC_OK) mism++;
             /* model */
-            if (cnt == k) sum -= hist[head]; else cnt++;
+            if (cnt == k)
+                sum -= hist[head];
+            else
+                cnt++;
             hist[head] = z;
             sum += z;
             head = (head + 1) % k;

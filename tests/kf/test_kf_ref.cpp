@@ -24,40 +24,52 @@ using inclino::ref::TiltOut;
 using inclino::ref::TiltParams;
 using inclino::ref::TiltRef;
 
-namespace {
+namespace
+{
 
 // The 10^6-step runs prove the bounds on the host build; the sanitizer build looks for undefined
 // behaviour on the same paths in a shorter run.
 constexpr long kSteps = UNIT_SIZE(1000000L, 30000L);
 
 constexpr double kQ16 = 65536.0;
-constexpr double kP = 281474976710656.0;  // 2^48: Q16 P format per unit^2
+constexpr double kP = 281474976710656.0; // 2^48: Q16 P format per unit^2
 
-int32_t q16(double v) { return static_cast<int32_t>(std::lround(v * kQ16)); }
-int32_t q30(double v) { return static_cast<int32_t>(std::lround(v * 1073741824.0)); }
-int64_t pf(double v) { return static_cast<int64_t>(std::llround(v * kP)); }
+int32_t q16(double v)
+{
+    return static_cast<int32_t>(std::lround(v * kQ16));
+}
+int32_t q30(double v)
+{
+    return static_cast<int32_t>(std::lround(v * 1073741824.0));
+}
+int64_t pf(double v)
+{
+    return static_cast<int64_t>(std::llround(v * kP));
+}
 
 // ---- generic filter -------------------------------------------------------------------------
 
 struct GenericCase {
     const char *name;
     unsigned n, nu, m;
-    std::vector<int32_t> a, b, h;    // Q30
-    std::vector<int64_t> q, r, p0;   // P format
+    std::vector<int32_t> a, b, h;  // Q30
+    std::vector<int64_t> q, r, p0; // P format
 };
 
 Eigen::MatrixXd mat_q30(const std::vector<int32_t> &v, unsigned rows, unsigned cols)
 {
     Eigen::MatrixXd m(rows, cols);
     for (unsigned i = 0; i < rows; i++)
-        for (unsigned j = 0; j < cols; j++) m(i, j) = v[i * cols + j] / 1073741824.0;
+        for (unsigned j = 0; j < cols; j++)
+            m(i, j) = v[i * cols + j] / 1073741824.0;
     return m;
 }
 Eigen::MatrixXd mat_p(const std::vector<int64_t> &v, unsigned n)
 {
     Eigen::MatrixXd m(n, n);
     for (unsigned i = 0; i < n; i++)
-        for (unsigned j = 0; j < n; j++) m(i, j) = inclino::ref::p_to_raw2(v[i * n + j]);
+        for (unsigned j = 0; j < n; j++)
+            m(i, j) = inclino::ref::p_to_raw2(v[i * n + j]);
     return m;
 }
 
@@ -98,7 +110,8 @@ void run_generic(const GenericCase &c, double *max_dx, double *max_rel_p, double
             ud(i) = u[i];
         }
         Eigen::VectorXd w(c.n);
-        for (unsigned i = 0; i < c.n; i++) w(i) = nd(gen);
+        for (unsigned i = 0; i < c.n; i++)
+            w(i) = nd(gen);
         xt = A * xt + (c.nu ? Eigen::VectorXd(B * ud) : Eigen::VectorXd::Zero(c.n)) +
              lq.matrixL() * w;
         for (unsigned i = 0; i < c.m; i++) {
@@ -108,7 +121,7 @@ void run_generic(const GenericCase &c, double *max_dx, double *max_rel_p, double
         }
         if (kf_predict(&f, &mdl, c.nu ? u.data() : nullptr) != INC_OK) errors++;
         r.predict(A, B, ud, Q);
-        const uint32_t mask = (k % 5 == 4) ? 1u : (1u << c.m) - 1u;  // a row left out sometimes
+        const uint32_t mask = (k % 5 == 4) ? 1u : (1u << c.m) - 1u; // a row left out sometimes
         if (kf_update(&f, &ms, z.data(), mask) != INC_OK) errors++;
         for (unsigned i = 0; i < c.m; i++)
             if (mask & (1u << i)) r.update_row(H.row(i), inclino::ref::p_to_raw2(c.r[i]), z[i]);
@@ -126,7 +139,7 @@ void run_generic(const GenericCase &c, double *max_dx, double *max_rel_p, double
                     if (f.p[i][j] != f.p[j][i]) errors++;
                 }
             Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(pf_);
-            *min_eig = std::min(*min_eig, es.eigenvalues().minCoeff());  // P format LSB
+            *min_eig = std::min(*min_eig, es.eigenvalues().minCoeff()); // P format LSB
             const double rel = (pf_ / 65536.0 - r.P).norm() / r.P.norm();
             if (k >= kSteps / 2) *max_rel_p = std::max(*max_rel_p, rel);
         }
@@ -138,31 +151,50 @@ void run_generic(const GenericCase &c, double *max_dx, double *max_rel_p, double
 void test_generic_vs_reference()
 {
     const int32_t one = 1 << 30;
-    const double dt = 5.0 / 4096.0;  // 819.2 Hz
+    const double dt = 5.0 / 4096.0; // 819.2 Hz
     std::vector<GenericCase> cases;
     // n = 1: random walk, Q16 unit, R = 0.25, Q = 1e-6 per step
-    cases.push_back({"n1 random walk", 1, 0, 1, {one}, {}, {one}, {pf(1e-6)}, {pf(0.25)}, {pf(1.0)}});
+    cases.push_back(
+        {"n1 random walk", 1, 0, 1, {one}, {}, {one}, {pf(1e-6)}, {pf(0.25)}, {pf(1.0)}});
     // n = 2: angle/bias at 819.2 Hz (deg, deg/s): the tilt model with u = gyro
-    cases.push_back({"n2 angle+bias", 2, 1, 1, {one, -q30(dt), 0, one}, {q30(dt), 0}, {one, 0},
-                     {pf(1e-3 * dt), 0, 0, pf(2e-7 * dt)}, {pf(0.25)}, {pf(1.0), 0, 0, pf(1.0)}});
+    cases.push_back({"n2 angle+bias",
+                     2,
+                     1,
+                     1,
+                     {one, -q30(dt), 0, one},
+                     {q30(dt), 0},
+                     {one, 0},
+                     {pf(1e-3 * dt), 0, 0, pf(2e-7 * dt)},
+                     {pf(0.25)},
+                     {pf(1.0), 0, 0, pf(1.0)}});
     // n = 3: constant acceleration, dt = 2^-6
     {
         const double h = 1.0 / 64;
-        cases.push_back({"n3 const accel", 3, 0, 1,
-                         {one, q30(h), q30(h * h / 2), 0, one, q30(h), 0, 0, one}, {}, {one, 0, 0},
-                         {pf(1e-8), 0, 0, 0, pf(1e-6), 0, 0, 0, pf(1e-4)}, {pf(0.01)},
+        cases.push_back({"n3 const accel",
+                         3,
+                         0,
+                         1,
+                         {one, q30(h), q30(h * h / 2), 0, one, q30(h), 0, 0, one},
+                         {},
+                         {one, 0, 0},
+                         {pf(1e-8), 0, 0, 0, pf(1e-6), 0, 0, 0, pf(1e-4)},
+                         {pf(0.01)},
                          {pf(1), 0, 0, 0, pf(1), 0, 0, 0, pf(1)}});
     }
     // n = 4: 2-D constant velocity, two rows (x, y), one control per axis
     {
         const double h = 0.01;
-        cases.push_back({"n4 2-D cv", 4, 2, 2,
-                         {one, 0, q30(h), 0, 0, one, 0, q30(h), 0, 0, one, 0, 0, 0, 0, one},
-                         {0, 0, 0, 0, q30(h), 0, 0, q30(h)},
-                         {one, 0, 0, 0, 0, one, 0, 0},
-                         {pf(1e-7), 0, 0, 0, 0, pf(1e-7), 0, 0, 0, 0, pf(1e-5), 0, 0, 0, 0, pf(1e-5)},
-                         {pf(0.04), pf(0.09)},
-                         {pf(4), 0, 0, 0, 0, pf(4), 0, 0, 0, 0, pf(4), 0, 0, 0, 0, pf(4)}});
+        cases.push_back(
+            {"n4 2-D cv",
+             4,
+             2,
+             2,
+             {one, 0, q30(h), 0, 0, one, 0, q30(h), 0, 0, one, 0, 0, 0, 0, one},
+             {0, 0, 0, 0, q30(h), 0, 0, q30(h)},
+             {one, 0, 0, 0, 0, one, 0, 0},
+             {pf(1e-7), 0, 0, 0, 0, pf(1e-7), 0, 0, 0, 0, pf(1e-5), 0, 0, 0, 0, pf(1e-5)},
+             {pf(0.04), pf(0.09)},
+             {pf(4), 0, 0, 0, 0, pf(4), 0, 0, 0, 0, pf(4), 0, 0, 0, 0, pf(4)}});
     }
     for (const auto &c : cases) {
         double dx = 0, rp = 0, me = 0;
@@ -170,7 +202,7 @@ void test_generic_vs_reference()
         std::printf("%-16s %ld steps: max |x_fw - x_ref| = %.3g raw (%.3g unit), max rel |P| diff "
                     "= %.3g, min eigenvalue of P = %.3g LSB\n",
                     c.name, kSteps, dx, dx / 65536.0, rp, me);
-        CHECK(dx <= 2.0);          // raw LSB of the state (Q16: 3e-5 unit)
+        CHECK(dx <= 2.0); // raw LSB of the state (Q16: 3e-5 unit)
         CHECK(rp <= 1e-5);
         CHECK(me >= -4.0);
     }
@@ -183,8 +215,8 @@ void test_adapt_vs_reference()
     kf_adapt_config c{};
     c.window = 8;
     c.c = pf(1e-6);
-    c.d = static_cast<int64_t>(std::llround(0.02 * 4294967296.0));  // 0.02 g per g of |dz|
-    c.a = pf(4e-3);   // R in [3.1e-3, 4e-3] g^2: B < 0 lowers R while the signal moves
+    c.d = static_cast<int64_t>(std::llround(0.02 * 4294967296.0)); // 0.02 g per g of |dz|
+    c.a = pf(4e-3); // R in [3.1e-3, 4e-3] g^2: B < 0 lowers R while the signal moves
     c.b = -q16(0.5);
     c.p0 = pf(1e-2);
     kf_adapt f;
@@ -209,10 +241,12 @@ void test_adapt_vs_reference()
             max_rel_p = std::max(max_rel_p, std::fabs(f.p / kP - r.variance()) / r.variance());
         }
     }
-    std::printf("adaptive         %ld steps: max |est_fw - est_ref| = %.3g g (%.3g LSB Q16), max rel "
-                "P diff = %.3g\n", kSteps, max_d, max_d * kQ16, max_rel_p);
+    std::printf(
+        "adaptive         %ld steps: max |est_fw - est_ref| = %.3g g (%.3g LSB Q16), max rel "
+        "P diff = %.3g\n",
+        kSteps, max_d, max_d * kQ16, max_rel_p);
     CHECK_EQ_INT(errors, 0);
-    CHECK(max_d * kQ16 <= 1.0);  // within one LSB of the Q16 output
+    CHECK(max_d * kQ16 <= 1.0); // within one LSB of the Q16 output
     CHECK(max_rel_p <= 1e-3);
 }
 
@@ -240,11 +274,11 @@ void run_tilt(uint32_t mode, double *max_da, double *max_db, unsigned *flag_diff
     for (long k = 0; k < kSteps; k++) {
         const double ts = k / fs;
         uint32_t dt_ns = 1220703u;
-        if (k % 997 == 500) dt_ns = 2 * 1220703u + 1;       // missed data-ready
+        if (k % 997 == 500) dt_ns = 2 * 1220703u + 1; // missed data-ready
         if (k % 4099 == 100) dt_ns = 3 * 1220703u + 1;
         // truth: slow motion and occasional tilt steps (a wheel onto a kerb)
         double wr = 0.5 * std::sin(ts * 0.05), wp = 0.3 * std::cos(ts * 0.031);
-        if (k % 50000 >= 40000 && k % 50000 < 40041) wr += 50.0;  // 4 deg in 0.05 s
+        if (k % 50000 >= 40000 && k % 50000 < 40041) wr += 50.0; // 4 deg in 0.05 s
         roll += wr * dt_ns * 1e-9;
         pitch += wp * dt_ns * 1e-9;
         bias[0] += 1e-4 * nd(gen) * 0.03;
@@ -253,15 +287,16 @@ void run_tilt(uint32_t mode, double *max_da, double *max_db, unsigned *flag_diff
         double a[3] = {-std::sin(pp), std::sin(rr) * std::cos(pp), std::cos(rr) * std::cos(pp)};
         for (int i = 0; i < 3; i++)
             a[i] += 0.006 * nd(gen) + 0.02 * std::sin(2 * M_PI * (24.0 + 3 * i) * ts + i);
-        if (k % 80000 >= 60000 && k % 80000 < 62000) a[0] += 0.25;  // accelerating: rejected
+        if (k % 80000 >= 60000 && k % 80000 < 62000) a[0] += 0.25; // accelerating: rejected
         double w[2] = {wr + bias[0] + 0.9 * nd(gen), wp + bias[1] + 0.9 * nd(gen)};
         uint32_t in_flags = 0;
-        if (k % 123457 >= 1000 && k % 123457 < 1020) {  // a saturation burst on x
+        if (k % 123457 >= 1000 && k % 123457 < 1020) { // a saturation burst on x
             w[0] = 300.0;
             in_flags |= TILT_IN_GYRO_SAT_X;
         }
         tilt_input in{};
-        for (int i = 0; i < 3; i++) in.accel_g[i] = q16(a[i]);
+        for (int i = 0; i < 3; i++)
+            in.accel_g[i] = q16(a[i]);
         in.gyro_dps[0] = q16(w[0]);
         in.gyro_dps[1] = q16(w[1]);
         in.flags = in_flags;
@@ -272,7 +307,7 @@ void run_tilt(uint32_t mode, double *max_da, double *max_db, unsigned *flag_diff
         const TiltOut ro = r.step(aq, gq, in_flags, inclino::ref::dt_seconds(dt_ns));
         if (ro.flags != o.flags) (*flag_diffs)++;
         if (!o.valid) errors++;
-        if (k >= kSteps / 10) {  // after convergence (2 min; 12 s in the sanitizer build)
+        if (k >= kSteps / 10) { // after convergence (2 min; 12 s in the sanitizer build)
             for (int i = 0; i < 2; i++) {
                 double d = t.ax[i].kf.x[0] / 4294967296.0 - ro.angle[i];
                 if (d > 180) d -= 360;
@@ -293,8 +328,9 @@ void test_tilt_vs_reference()
         unsigned fd = 0;
         run_tilt(m, &da, &db, &fd);
         std::printf("tilt %-12s %ld steps: max |angle_fw - angle_ref| = %.3g deg, max |bias diff| "
-                    "= %.3g deg/s, flag differences %u\n", names[m], kSteps, da, db, fd);
-        CHECK(da <= 0.005);  // issue 6: angle within 0.005 deg of the reference
+                    "= %.3g deg/s, flag differences %u\n",
+                    names[m], kSteps, da, db, fd);
+        CHECK(da <= 0.005); // issue 6: angle within 0.005 deg of the reference
         // The printed form's offset is the last correction divided by dt: it magnifies the
         // angle difference by 1/dt = 819 (and is no bias estimate anyway).
         CHECK(db <= (m == TILT_MODE_SEED_PRINTED ? 0.1 : 0.001));
@@ -302,7 +338,7 @@ void test_tilt_vs_reference()
     }
 }
 
-}  // namespace
+} // namespace
 
 int main()
 {

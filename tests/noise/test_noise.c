@@ -21,7 +21,7 @@
 #else
 #define STAT_N 40000
 #endif
-#define SD_TOL (6.0 / sqrt(2.0 * STAT_N))   /* relative sd of a sample sd, times 6 */
+#define SD_TOL (6.0 / sqrt(2.0 * STAT_N)) /* relative sd of a sample sd, times 6 */
 
 static void test_config_rejected(void)
 {
@@ -39,7 +39,7 @@ static void test_config_rejected(void)
     cfg.ch[4].bias_instability = 0.01; /* no correlation-time range */
     CHECK_ERR(sim_noise_init(&n, &cfg), INC_ERR_INVAL);
     cfg.ch[4].bi_tc_min_s = 10.0;
-    cfg.ch[4].bi_tc_max_s = 5.0;       /* reversed */
+    cfg.ch[4].bi_tc_max_s = 5.0; /* reversed */
     CHECK_ERR(sim_noise_init(&n, &cfg), INC_ERR_INVAL);
     cfg.ch[4].bi_tc_max_s = 10.0 * 2e5; /* > 5 decades */
     CHECK_ERR(sim_noise_init(&n, &cfg), INC_ERR_INVAL);
@@ -203,7 +203,7 @@ static void test_quantum(void)
     cfg.ch[0].quantum = 0.25;
     REQUIRE(sim_noise_init(&n, &cfg) == INC_OK);
     CHECK_NEAR(sim_noise_step(&n, 0, 0.37, 25.0, 0.01), 0.25, 0.0);
-    CHECK_NEAR(sim_noise_step(&n, 0, 0.125, 25.0, 0.01), 0.25, 0.0);   /* tie: away from zero */
+    CHECK_NEAR(sim_noise_step(&n, 0, 0.125, 25.0, 0.01), 0.25, 0.0); /* tie: away from zero */
     CHECK_NEAR(sim_noise_step(&n, 0, -0.125, 25.0, 0.01), -0.25, 0.0);
     CHECK_NEAR(sim_noise_step(&n, 0, 0.1249, 25.0, 0.01), 0.0, 0.0);
 }
@@ -292,7 +292,7 @@ static void test_adis_preset(void)
             tbest = t;
         }
     }
-    CHECK_NEAR(best, 0.006, 0.0003);   /* seed: minimum about 0.006 */
+    CHECK_NEAR(best, 0.006, 0.0003);      /* seed: minimum about 0.006 */
     CHECK(tbest > 80.0 && tbest < 160.0); /* seed: near 100 s */
     /* seed 003: unfiltered gyro noise below 1 deg/s rms */
     CHECK(ax.white / sqrt(DT_ADIS) < 1.0);

@@ -9,14 +9,10 @@ struct fx fx;
 enum sca3000_variant fx_driver_variant(enum sim_sca3000_variant v)
 {
     switch (v) {
-    case SIM_SCA3000_D01:
-        return SCA3000_D01;
-    case SIM_SCA3000_E02:
-        return SCA3000_E02;
-    case SIM_SCA3000_E04:
-        return SCA3000_E04;
-    default:
-        return SCA3000_E05;
+    case SIM_SCA3000_D01: return SCA3000_D01;
+    case SIM_SCA3000_E02: return SCA3000_E02;
+    case SIM_SCA3000_E04: return SCA3000_E04;
+    default: return SCA3000_E05;
     }
 }
 

@@ -23,7 +23,7 @@ static void test_wrong_revid(void)
     int16_t xyz[3] = {1, 2, 3};
     REQUIRE(fx_setup_part(SIM_SCA3000_D01, 0x41) == 0);
     CHECK_ERR(sca3000_init(&fx.dev, &fx.cfg), INC_ERR_ID);
-    CHECK_EQ_HEX(sca3000_revid(&fx.dev), 0x41);     /* the part found is named */
+    CHECK_EQ_HEX(sca3000_revid(&fx.dev), 0x41); /* the part found is named */
     CHECK(!fx.dev.ready);
     CHECK_ERR(sca3000_read_accel(&fx.dev, xyz), INC_ERR_STATE);
     CHECK_EQ_INT(xyz[0], 1);
@@ -156,8 +156,8 @@ static void test_frame_error_reported(void)
     CHECK_ERR(sca3000_read_accel(&fx.dev, xyz), INC_ERR_DEVICE);
     CHECK_EQ_HEX(sca3000_last_status(&fx.dev) & SCA3000_STATUS_FRAME, SCA3000_STATUS_FRAME);
     CHECK_EQ_INT(fx.dev.frame_errors, 1);
-    CHECK_EQ_INT(xyz[0], 7);                        /* no data from a call that failed */
-    CHECK_OK(sca3000_read_accel(&fx.dev, xyz));     /* reported once, then cleared */
+    CHECK_EQ_INT(xyz[0], 7);                    /* no data from a call that failed */
+    CHECK_OK(sca3000_read_accel(&fx.dev, xyz)); /* reported once, then cleared */
     CHECK_EQ_INT(xyz[2], 1333);
     /* The glitch is in the log as what it was, and nothing else is. */
     CHECK_EQ_INT(sim_violation_count(&fx.board.log, SIM_VIOL_PARTIAL_WORD), 1);
@@ -203,7 +203,8 @@ static void test_locked_up_part(void)
 }
 
 /* The driver configured faster than the part allows: the log shows it, no data comes back. */
-static void check_too_fast(uint32_t period, uint32_t setup, uint32_t stall, enum sim_violation_kind k)
+static void check_too_fast(uint32_t period, uint32_t setup, uint32_t stall,
+                           enum sim_violation_kind k)
 {
     int16_t xyz[3] = {7, 7, 7};
     int err;
@@ -265,7 +266,7 @@ static void test_invalid_config_and_arguments(void)
     c = fx.cfg;
     c.spi.timing.sclk_period_ns = 0;
     CHECK_ERR(sca3000_init(&fx.dev, &c), INC_ERR_INVAL);
-    CHECK_EQ_INT(fx.part.frames, 0);                /* nothing reached the part */
+    CHECK_EQ_INT(fx.part.frames, 0); /* nothing reached the part */
 
     /* Not initialised (the last init failed). */
     CHECK_ERR(sca3000_read_accel(&fx.dev, xyz), INC_ERR_STATE);
@@ -286,8 +287,9 @@ static void test_invalid_config_and_arguments(void)
     CHECK_ERR(sca3000_read_temp(&fx.dev, NULL), INC_ERR_NULL);
     CHECK_ERR(sca3000_read_sample(&fx.dev, NULL), INC_ERR_NULL);
     CHECK_ERR(sca3000_read_burst(&fx.dev, SCA3000_REG_X_MSB, b, 0), INC_ERR_INVAL);
-    CHECK_ERR(sca3000_read_burst(&fx.dev, SCA3000_REG_X_MSB, b, SCA3000_MAX_BURST + 1u), INC_ERR_INVAL);
-    CHECK_ERR(sca3000_read_burst(&fx.dev, 0x01, b, 1), INC_ERR_INVAL);     /* reserved */
+    CHECK_ERR(sca3000_read_burst(&fx.dev, SCA3000_REG_X_MSB, b, SCA3000_MAX_BURST + 1u),
+              INC_ERR_INVAL);
+    CHECK_ERR(sca3000_read_burst(&fx.dev, 0x01, b, 1), INC_ERR_INVAL); /* reserved */
     CHECK_ERR(sca3000_read_burst(&fx.dev, SCA3000_REG_UNLOCK, b, 1), INC_ERR_INVAL);
     CHECK_ERR(sca3000_read_burst(&fx.dev, SCA3000_REG_X_MSB, NULL, 1), INC_ERR_NULL);
     CHECK_ERR(sca3000_ring_config(&fx.dev, 0, 1), INC_ERR_INVAL);
@@ -298,7 +300,7 @@ static void test_invalid_config_and_arguments(void)
     CHECK_ERR(sca3000_ring_count(&fx.dev, NULL), INC_ERR_NULL);
     CHECK_ERR(sca3000_int_config(&fx.dev, SCA3000_INT_MOTION_X, true), INC_ERR_INVAL);
     CHECK_ERR(sca3000_int_status(&fx.dev, NULL), INC_ERR_NULL);
-    CHECK_ERR(sca3000_wait_int(&fx.dev, 1000), INC_ERR_STATE);   /* no INT pin */
+    CHECK_ERR(sca3000_wait_int(&fx.dev, 1000), INC_ERR_STATE); /* no INT pin */
     CHECK_ERR(sca3000_ind_read(&fx.dev, SCA3000_IND_OUT_CTRL, NULL), INC_ERR_NULL);
     CHECK_NO_VIOLATIONS();
 }

@@ -72,8 +72,8 @@ static void setup(enum sim_sca3000_variant v)
 
 static void test_bus_time_d01(void)
 {
-    static const uint8_t regs[8] = {SCA3000_REG_X_MSB, SCA3000_REG_X_LSB, SCA3000_REG_Y_MSB,
-                                    SCA3000_REG_Y_LSB, SCA3000_REG_Z_MSB, SCA3000_REG_Z_LSB,
+    static const uint8_t regs[8] = {SCA3000_REG_X_MSB,    SCA3000_REG_X_LSB,   SCA3000_REG_Y_MSB,
+                                    SCA3000_REG_Y_LSB,    SCA3000_REG_Z_MSB,   SCA3000_REG_Z_LSB,
                                     SCA3000_REG_TEMP_MSB, SCA3000_REG_TEMP_LSB};
     static const uint8_t msb[4] = {SCA3000_REG_X_MSB, SCA3000_REG_Y_MSB, SCA3000_REG_Z_MSB,
                                    SCA3000_REG_TEMP_MSB};
@@ -89,8 +89,8 @@ static void test_bus_time_d01(void)
     row("D01", "burst (X/Y/Z in one CS period, temperature in one)", 80, min_set);
     CHECK_EQ_INT(falls, 2);
     /* Each CS period: S + bits x P - P/2 + H (the engine's exact figure, spi_bitbang.h). */
-    CHECK_EQ_INT(last_rise - first_fall, (1000 + 56 * 2000 - 1000 + 1000) + 10000 +
-                                             (1000 + 24 * 2000 - 1000 + 1000));
+    CHECK_EQ_INT(last_rise - first_fall,
+                 (1000 + 56 * 2000 - 1000 + 1000) + 10000 + (1000 + 24 * 2000 - 1000 + 1000));
     CHECK_EQ_INT(min_set, 174000);
     CHECK((last_rise - first_fall) * 100u <= min_set * 110u); /* goal: <= 1.10 x */
 

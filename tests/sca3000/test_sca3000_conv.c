@@ -47,13 +47,13 @@ static void test_decode_ring_and_temp(void)
     CHECK_EQ_INT(sca3000_decode_ring11(0xFFE0), -4);
     CHECK_EQ_INT(sca3000_decode_ring11(0x7FE0), 4092);
     CHECK_EQ_INT(sca3000_decode_ring11(0x8000), -4096);
-    CHECK_EQ_INT(sca3000_decode_ring11(0x001F), 0);    /* bits[4:0] are not data */
-    CHECK_EQ_INT(sca3000_decode_ring11(0x0A60), 332);  /* 83 << 5 */
+    CHECK_EQ_INT(sca3000_decode_ring11(0x001F), 0);   /* bits[4:0] are not data */
+    CHECK_EQ_INT(sca3000_decode_ring11(0x0A60), 332); /* 83 << 5 */
 
-    CHECK_EQ_INT(sca3000_decode_temp(0x2080), 260);    /* 260 << 5 */
+    CHECK_EQ_INT(sca3000_decode_temp(0x2080), 260); /* 260 << 5 */
     CHECK_EQ_INT(sca3000_decode_temp(0x3FE0), 511);
-    CHECK_EQ_INT(sca3000_decode_temp(0xC000), 0);      /* bits 15:14 are not data */
-    CHECK_EQ_INT(sca3000_decode_temp(0x001F), 0);      /* nor bits 4:0 */
+    CHECK_EQ_INT(sca3000_decode_temp(0xC000), 0); /* bits 15:14 are not data */
+    CHECK_EQ_INT(sca3000_decode_temp(0x001F), 0); /* nor bits 4:0 */
     CHECK_EQ_INT(sca3000_decode_temp(0x1AC0), 214);
 }
 
@@ -72,18 +72,18 @@ static void check_accel_vectors(enum sca3000_variant v, const struct vec *t, siz
 
 static void test_accel_vectors(void)
 {
-    static const struct vec d01[] = {{0, 0}, {1, 49}, {-1, -49}, {2, 98}, {-2, -98}, {7, 344},
-                                     {-7, -344}, {1333, 65520}, {-1333, -65520},
-                                     {4095, 201277}, {-4096, -201327}};
-    static const struct vec e02[] = {{0, 0}, {1, 66}, {-1, -66}, {2, 131}, {-2, -131}, {7, 459},
-                                     {-7, -459}, {1333, 87359}, {-1333, -87359},
-                                     {4095, 268370}, {-4096, -268435}};
-    static const struct vec e04[] = {{0, 0}, {1, 131}, {-1, -131}, {2, 262}, {-2, -262},
-                                     {7, 918}, {-7, -918}, {1333, 174719}, {-1333, -174719},
-                                     {4095, 536740}, {-4096, -536871}};
-    static const struct vec e05[] = {{0, 0}, {1, 410}, {-1, -410}, {2, 819}, {-2, -819},
-                                     {7, 2867}, {-7, -2867}, {1333, 545997}, {-1333, -545997},
-                                     {4095, 1677312}, {-4096, -1677722}};
+    static const struct vec d01[] = {
+        {0, 0},     {1, 49},       {-1, -49},       {2, 98},        {-2, -98},       {7, 344},
+        {-7, -344}, {1333, 65520}, {-1333, -65520}, {4095, 201277}, {-4096, -201327}};
+    static const struct vec e02[] = {
+        {0, 0},     {1, 66},       {-1, -66},       {2, 131},       {-2, -131},      {7, 459},
+        {-7, -459}, {1333, 87359}, {-1333, -87359}, {4095, 268370}, {-4096, -268435}};
+    static const struct vec e04[] = {
+        {0, 0},     {1, 131},       {-1, -131},       {2, 262},       {-2, -262},      {7, 918},
+        {-7, -918}, {1333, 174719}, {-1333, -174719}, {4095, 536740}, {-4096, -536871}};
+    static const struct vec e05[] = {
+        {0, 0},      {1, 410},       {-1, -410},       {2, 819},        {-2, -819},       {7, 2867},
+        {-7, -2867}, {1333, 545997}, {-1333, -545997}, {4095, 1677312}, {-4096, -1677722}};
     check_accel_vectors(SCA3000_D01, d01, sizeof(d01) / sizeof(d01[0]), 750);
     check_accel_vectors(SCA3000_E02, e02, sizeof(e02) / sizeof(e02[0]), 1000);
     check_accel_vectors(SCA3000_E04, e04, sizeof(e04) / sizeof(e04[0]), 2000);
@@ -124,7 +124,8 @@ static void test_accel_bound_exhaustive(void)
             diff = (int64_t)q * 1000000 - (int64_t)c * ug * 65536;
             if (diff < 0) diff = -diff;
             if (diff > worst) worst = diff;
-            if (c > -4096 && (sca3000_accel_to_q16_g(-c, (enum sca3000_variant)v, &qn) != 0 || qn != -q)) {
+            if (c > -4096 &&
+                (sca3000_accel_to_q16_g(-c, (enum sca3000_variant)v, &qn) != 0 || qn != -q)) {
                 bad++;
             }
         }
@@ -136,9 +137,9 @@ static void test_accel_bound_exhaustive(void)
 
 static void test_temperature(void)
 {
-    static const struct vec t[] = {{0, -7813348}, {1, -7776939}, {214, -21845}, {215, 14564},
-                                   {260, 1652964}, {322, 3910315}, {511, 10791595},
-                                   {196, -677205}, {100, -4172459}};
+    static const struct vec t[] = {{0, -7813348},   {1, -7776939},  {214, -21845},
+                                   {215, 14564},    {260, 1652964}, {322, 3910315},
+                                   {511, 10791595}, {196, -677205}, {100, -4172459}};
     size_t i;
     int32_t c = 99;
     int32_t raw;

@@ -44,13 +44,14 @@ struct accel_case {
 static void test_xyz_exact_counts(void)
 {
     static const struct accel_case cases[] = {
-        {{0.5, -0.25, 1.0}, {{667, -333, 1333}, {500, -250, 1000}, {250, -125, 500}, {80, -40, 160}}},
+        {{0.5, -0.25, 1.0},
+         {{667, -333, 1333}, {500, -250, 1000}, {250, -125, 500}, {80, -40, 160}}},
         {{0.1234, -0.9876, 2.5},
          {{165, -1317, 3333}, {123, -988, 2500}, {62, -494, 1250}, {20, -158, 400}}},
         {{0.0, 0.0, -1.0}, {{0, 0, -1333}, {0, 0, -1000}, {0, 0, -500}, {0, 0, -160}}},
         /* Beyond the 13-bit code range: saturation at 4095 / -4096 (E05: 5 g = 800 counts). */
-        {{5.0, -5.0, 3.2}, {{4095, -4096, 4095}, {4095, -4096, 3200}, {2500, -2500, 1600},
-                            {800, -800, 512}}},
+        {{5.0, -5.0, 3.2},
+         {{4095, -4096, 4095}, {4095, -4096, 3200}, {2500, -2500, 1600}, {800, -800, 512}}},
     };
     unsigned v, i;
     for (v = 0; v < 4u; v++) {
@@ -65,7 +66,9 @@ static void test_xyz_exact_counts(void)
             CHECK_EQ_INT(xyz[1], cases[i].want[v][1]);
             CHECK_EQ_INT(xyz[2], cases[i].want[v][2]);
             CHECK_OK(sca3000_accel_to_q16_g(xyz[2], fx.cfg.variant, &g));
-            CHECK_NEAR(g / 65536.0, (double)cases[i].want[v][2] * sca3000_ug_per_lsb(fx.cfg.variant) * 1e-6, 8e-6);
+            CHECK_NEAR(g / 65536.0,
+                       (double)cases[i].want[v][2] * sca3000_ug_per_lsb(fx.cfg.variant) * 1e-6,
+                       8e-6);
         }
         CHECK_EQ_INT(fx.part.corrupt_frames, 0);
         CHECK_NO_VIOLATIONS();
@@ -106,10 +109,8 @@ static void test_temperature_d01(void)
 
 static void test_modes_each_variant(void)
 {
-    static const uint32_t odr[4][3] = {{250000, 250000, 0},
-                                       {125000, 62500, 0},
-                                       {100000, 50000, 400000},
-                                       {200000, 50000, 400000}};
+    static const uint32_t odr[4][3] = {
+        {250000, 250000, 0}, {125000, 62500, 0}, {100000, 50000, 400000}, {200000, 50000, 400000}};
     unsigned v, m;
     for (v = 0; v < 4u; v++) {
         int16_t xyz[3];
@@ -189,8 +190,8 @@ static void test_ring_buffer(void)
     REQUIRE(fx_setup(SIM_SCA3000_D01) == 0);
     fx_input(0.5, -0.25, 1.0, 25.0);
     fx_wait_ns(SETTLE_NS);
-    CHECK_OK(sca3000_ring_config(&fx.dev, SCA3000_OUT_CTRL_X | SCA3000_OUT_CTRL_Y |
-                                              SCA3000_OUT_CTRL_Z, 1));
+    CHECK_OK(sca3000_ring_config(&fx.dev,
+                                 SCA3000_OUT_CTRL_X | SCA3000_OUT_CTRL_Y | SCA3000_OUT_CTRL_Z, 1));
     CHECK_OK(sca3000_int_config(&fx.dev, SCA3000_INT_RING_1_2, true));
     CHECK_EQ_HEX(fx.part.int_mask, 0x14 | 0x40 | 0x01); /* protected bits kept */
     CHECK_OK(sca3000_ring_enable(&fx.dev, true));
@@ -218,7 +219,7 @@ static void test_ring_buffer(void)
     /* Nothing pending: the wait times out (INT was acknowledged). */
     CHECK_ERR(sca3000_wait_int(&fx.dev, fx.board.clk.now_ns + 10000000u), INC_ERR_TIMEOUT);
     /* A read of fewer values than stored leaves the rest. */
-    fx_wait_ns(40000000u);                      /* 10 samples */
+    fx_wait_ns(40000000u); /* 10 samples */
     CHECK_OK(sca3000_ring_read(&fx.dev, vals, 4, &n));
     CHECK_EQ_INT(n, 4);
     CHECK_EQ_INT(vals[3], 664);
@@ -241,7 +242,7 @@ static void test_ring_buffer(void)
     CHECK(fx.board.clk.now_ns - t0 <= 2880000000u);
     CHECK_OK(sca3000_ring_read(&fx.dev, vals, SCA3000_RING_CAPACITY, &n));
     CHECK_EQ_INT(n, 144);
-    CHECK_EQ_INT(vals[0], -152);                /* -0.3 g = -150 counts -> floor(-37.5) = -38 */
+    CHECK_EQ_INT(vals[0], -152); /* -0.3 g = -150 counts -> floor(-37.5) = -38 */
     CHECK_EQ_INT(vals[143], -152);
     CHECK_OK(sca3000_int_status(&fx.dev, &st));
     CHECK_EQ_HEX(st, SCA3000_INT_RING_3_4 | SCA3000_INT_RING_1_2);
@@ -249,8 +250,8 @@ static void test_ring_buffer(void)
 }
 
 /* Error model: a constant bias on X, seen exactly in the counts. */
-static void bias_apply(void *ctx, const struct sim_inertial_input *in, struct sim_inertial_input *out,
-                       uint64_t t_ns, double dt_s)
+static void bias_apply(void *ctx, const struct sim_inertial_input *in,
+                       struct sim_inertial_input *out, uint64_t t_ns, double dt_s)
 {
     const double *bias = ctx;
     (void)t_ns;
@@ -277,18 +278,18 @@ static void test_error_model_and_physics_hooks(void)
     fx_input(0.5, 0.0, 1.0, 25.0);
     fx_wait_ns(SETTLE_NS);
     CHECK_OK(sca3000_read_accel(&fx.dev, xyz));
-    CHECK_EQ_INT(xyz[0], 667);                  /* 0.5 g / 0.75 mg */
+    CHECK_EQ_INT(xyz[0], 667); /* 0.5 g / 0.75 mg */
     sim_sca3000_set_error_model(&fx.part, &em);
     fx_wait_ns(SETTLE_NS);
     CHECK_OK(sca3000_read_accel(&fx.dev, xyz));
-    CHECK_EQ_INT(xyz[0], 867);                  /* (0.5 + 0.15) g / 0.75 mg = 866.67 */
-    CHECK_EQ_INT(xyz[2], 1333);                 /* other axes untouched */
+    CHECK_EQ_INT(xyz[0], 867);  /* (0.5 + 0.15) g / 0.75 mg = 866.67 */
+    CHECK_EQ_INT(xyz[2], 1333); /* other axes untouched */
     sim_sca3000_set_error_model(&fx.part, NULL);
     sim_sca3000_set_physics(&fx.part, &ph);
-    sim_clock_advance_to(&fx.board.clk, 1000000000u);  /* t = 1 s: step 10 -> 0.10 g */
+    sim_clock_advance_to(&fx.board.clk, 1000000000u); /* t = 1 s: step 10 -> 0.10 g */
     CHECK_OK(sca3000_read_accel(&fx.dev, xyz));
-    CHECK_EQ_INT(xyz[0], 133);                  /* 0.10 / 0.00075 = 133.3 */
-    sim_clock_advance_to(&fx.board.clk, 2500000000u);  /* step 25 -> 0.25 g */
+    CHECK_EQ_INT(xyz[0], 133);                        /* 0.10 / 0.00075 = 133.3 */
+    sim_clock_advance_to(&fx.board.clk, 2500000000u); /* step 25 -> 0.25 g */
     CHECK_OK(sca3000_read_accel(&fx.dev, xyz));
     CHECK_EQ_INT(xyz[0], 333);
     CHECK_NO_VIOLATIONS();

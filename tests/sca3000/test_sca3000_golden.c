@@ -33,10 +33,10 @@ struct results {
 };
 static struct results got;
 
-#define TRY(expr)                   \
-    do {                            \
-        r->err = (expr);            \
-        if (r->err != 0) return;    \
+#define TRY(expr)                \
+    do {                         \
+        r->err = (expr);         \
+        if (r->err != 0) return; \
     } while (0)
 
 /* D01: init, one full sample (X/Y/Z + temperature), option 1 (bypass), X/Y/Z again. */
@@ -71,7 +71,8 @@ static void seq_e05_ring(struct results *r)
 {
     TRY(sca3000_init(&fx.dev, &fx.cfg));
     r->revid = sca3000_revid(&fx.dev);
-    TRY(sca3000_ring_config(&fx.dev, SCA3000_OUT_CTRL_X | SCA3000_OUT_CTRL_Y | SCA3000_OUT_CTRL_Z, 2));
+    TRY(sca3000_ring_config(&fx.dev, SCA3000_OUT_CTRL_X | SCA3000_OUT_CTRL_Y | SCA3000_OUT_CTRL_Z,
+                            2));
     TRY(sca3000_int_config(&fx.dev, SCA3000_INT_RING_1_2, true));
     TRY(sca3000_ring_enable(&fx.dev, true));
     TRY(sca3000_wait_int(&fx.dev, hal_now_ns(fx.cfg.hal) + 1000000000u));
@@ -103,7 +104,8 @@ static int record(const struct golden *g)
     if (err != 0) {
         return err;
     }
-    trace_rec_comment(&rec, "SCA3000 driver against the model (tests/sca3000/test_sca3000_golden.c)");
+    trace_rec_comment(&rec,
+                      "SCA3000 driver against the model (tests/sca3000/test_sca3000_golden.c)");
     trace_rec_comment(&rec, "input: 0.5, -0.25, 1.0 g, 25 degC; SCLK 500 kHz, mode 3");
     fx.cfg.bus = &rec.bus;
     fx.cfg.hal = &rec.hal;

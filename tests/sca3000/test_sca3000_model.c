@@ -97,8 +97,8 @@ static void test_writes_and_frame_error(void)
     /* A write that is not exactly [cmd][data] is a corrupt frame and is not applied. */
     CHECK_OK(spi_transfer(&raw, three, NULL, 3, SPI_CS_HOLD));
     CHECK_EQ_HEX(fx.part.mode, SIM_SCA3000_MODE_DEFAULT);
-    CHECK_EQ_HEX(rd1(0x02), 0x01);  /* frame error reported ... */
-    CHECK_EQ_HEX(rd1(0x02), 0x00);  /* ... and cleared by the read */
+    CHECK_EQ_HEX(rd1(0x02), 0x01); /* frame error reported ... */
+    CHECK_EQ_HEX(rd1(0x02), 0x00); /* ... and cleared by the read */
     /* A command byte with bit0 set is corrupt too. */
     CHECK_OK(spi_transfer(&raw, bad_cmd, NULL, 2, SPI_CS_HOLD));
     CHECK_EQ_HEX(rd1(0x02), 0x01);
@@ -127,7 +127,7 @@ static void test_unlock_and_indirect(void)
     const uint16_t one_frame[6] = {(0x1E << 2) | 2u, 0x00, (0x1E << 2) | 2u, 0x50,
                                    (0x1E << 2) | 2u, 0xA0};
     REQUIRE(setup(SIM_SCA3000_D01, 3) == 0);
-    CHECK_EQ_HEX(rd1(0x02) & 0x20, 0x00);         /* locked after power-up */
+    CHECK_EQ_HEX(rd1(0x02) & 0x20, 0x00); /* locked after power-up */
     /* Locked: CTRL_SEL/CTRL_DATA do nothing. */
     wr(0x18, 0x0B);
     CHECK_EQ_HEX(rd1(0x22), 0x00);
@@ -149,9 +149,9 @@ static void test_unlock_and_indirect(void)
     CHECK_EQ_HEX(rd1(0x22), SIM_SCA3000_OUT_CTRL_DEFAULT);
     wr(0x18, 0x02);
     CHECK_EQ_HEX(rd1(0x22), SIM_SCA3000_MD_CTRL_DEFAULT);
-    wr(0x22, 0x45);                                  /* protected bits kept: accepted */
+    wr(0x22, 0x45); /* protected bits kept: accepted */
     CHECK_EQ_HEX(fx.part.ind[2], 0x45);
-    wr(0x18, 0x01);                                  /* I2C_DISABLE exists on the D01 */
+    wr(0x18, 0x01); /* I2C_DISABLE exists on the D01 */
     wr(0x22, 0x01);
     CHECK_EQ_HEX(rd1(0x22), 0x01);
     /* Any UNLOCK write relocks. */
@@ -164,23 +164,23 @@ static void test_unlock_and_indirect(void)
 static void test_lock_up(void)
 {
     REQUIRE(setup(SIM_SCA3000_E05, 0) == 0);
-    wr(0x01, 0x00);                                  /* reserved address */
+    wr(0x01, 0x00); /* reserved address */
     CHECK(fx.part.locked_up);
-    CHECK_EQ_HEX(rd1(0x00), 0x00);                   /* answers nothing any more */
+    CHECK_EQ_HEX(rd1(0x00), 0x00); /* answers nothing any more */
     CHECK_EQ_INT(sim_violation_count(&fx.board.log, SIM_VIOL_PROTOCOL), 1);
     sim_sca3000_power_cycle(&fx.part);
     CHECK_EQ_HEX(rd1(0x00), SIM_SCA3000_REVID_DEFAULT);
-    wr(0x14, 0x00);                                  /* clears MODE bit3 (reserved) */
+    wr(0x14, 0x00); /* clears MODE bit3 (reserved) */
     CHECK(fx.part.locked_up);
     sim_sca3000_power_cycle(&fx.part);
-    wr(0x21, 0x00);                                  /* clears INT_MASK protected bits */
+    wr(0x21, 0x00); /* clears INT_MASK protected bits */
     CHECK(fx.part.locked_up);
     sim_sca3000_power_cycle(&fx.part);
     wr(0x1E, 0x00);
     wr(0x1E, 0x50);
     wr(0x1E, 0xA0);
     wr(0x18, 0x0B);
-    wr(0x22, 0x1C);                                  /* OUT_CTRL without bits 7..5 */
+    wr(0x22, 0x1C); /* OUT_CTRL without bits 7..5 */
     CHECK(fx.part.locked_up);
     CHECK_EQ_INT(sim_violation_count(&fx.board.log, SIM_VIOL_PROTOCOL), 4);
 }
@@ -215,11 +215,11 @@ static void test_ring_fifo_and_int(void)
     REQUIRE(setup(SIM_SCA3000_D01, 3) == 0);
     fx_input(0.5, -0.25, 1.0, 25.0);
     fx_wait_ns(4000000);
-    CHECK(sim_pinbus_read(&fx.board.bus, FX_INT));   /* active low, inactive = high */
-    wr(0x21, SIM_SCA3000_INT_MASK_DEFAULT | 0x40);   /* ring 1/2 full drives INT */
-    wr(0x14, SIM_SCA3000_MODE_DEFAULT | 0x80);       /* ring on */
+    CHECK(sim_pinbus_read(&fx.board.bus, FX_INT)); /* active low, inactive = high */
+    wr(0x21, SIM_SCA3000_INT_MASK_DEFAULT | 0x40); /* ring 1/2 full drives INT */
+    wr(0x14, SIM_SCA3000_MODE_DEFAULT | 0x80);     /* ring on */
     CHECK_EQ_HEX(rd1(0x15), 0);
-    fx_wait_ns(40000000);                            /* 10 samples at 250 Hz */
+    fx_wait_ns(40000000); /* 10 samples at 250 Hz */
     CHECK_EQ_INT(rd1(0x15), 30);
     /* FIFO port: two values, X then Y: floor(667/4) = 166 -> 0x14C0, floor(-333/4) = -84 ->
      * 0xF580. The address does not move on. */
@@ -232,7 +232,7 @@ static void test_ring_fifo_and_int(void)
     /* Half a value read (MSB only): nothing leaves the ring. */
     rd(0x0F, b, 1);
     CHECK_EQ_INT(rd1(0x15), 28);
-    rd(0x0F, b, 2);                                  /* Z: floor(1333/4) = 333 -> 0x29A0 */
+    rd(0x0F, b, 2); /* Z: floor(1333/4) = 333 -> 0x29A0 */
     CHECK_EQ_HEX(b[0], 0x29);
     CHECK_EQ_HEX(b[1], 0xA0);
     CHECK_EQ_INT(rd1(0x15), 27);
@@ -241,8 +241,8 @@ static void test_ring_fifo_and_int(void)
         fx_wait_ns(4000000);
     }
     CHECK_EQ_INT(rd1(0x15), 96);
-    CHECK(!sim_pinbus_read(&fx.board.bus, FX_INT));  /* INT active */
-    CHECK_EQ_HEX(rd1(0x16), 0x40);                   /* acknowledges */
+    CHECK(!sim_pinbus_read(&fx.board.bus, FX_INT)); /* INT active */
+    CHECK_EQ_HEX(rd1(0x16), 0x40);                  /* acknowledges */
     CHECK(sim_pinbus_read(&fx.board.bus, FX_INT));
     CHECK_EQ_HEX(rd1(0x16), 0x00);
     /* Full: the oldest values are overwritten, BUF_COUNT stays at 192. */
@@ -256,10 +256,8 @@ static void test_ring_fifo_and_int(void)
 static void test_output_data_rates(void)
 {
     /* mHz per variant and MODE[1:0] (sensors.md 1.6). */
-    static const uint32_t want[4][3] = {{250000, 250000, 0},
-                                        {125000, 62500, 0},
-                                        {100000, 50000, 400000},
-                                        {200000, 50000, 400000}};
+    static const uint32_t want[4][3] = {
+        {250000, 250000, 0}, {125000, 62500, 0}, {100000, 50000, 400000}, {200000, 50000, 400000}};
     unsigned v, m;
     for (v = 0; v < 4u; v++) {
         for (m = 0; m < 3u; m++) {
@@ -271,7 +269,7 @@ static void test_output_data_rates(void)
             wr(0x14, (uint8_t)(SIM_SCA3000_MODE_DEFAULT | m));
             CHECK_EQ_INT(sim_sca3000_odr_mhz(&fx.part), want[v][m]);
             before = fx.part.samples;
-            fx_wait_ns(2000000000ull);               /* 2 s */
+            fx_wait_ns(2000000000ull); /* 2 s */
             CHECK_EQ_INT(fx.part.samples - before, want[v][m] / 500u);
             CHECK_NO_VIOLATIONS();
         }

@@ -109,7 +109,8 @@ static void on_change(void *arg, unsigned pin, bool level, uint64_t t)
 
 static void test_pinbus_resolution(void)
 {
-    struct sim_pin_listener l = {on_change, NULL, SIM_PIN_MASK(0) | SIM_PIN_MASK(1) | SIM_PIN_MASK(2), NULL};
+    struct sim_pin_listener l = {on_change, NULL,
+                                 SIM_PIN_MASK(0) | SIM_PIN_MASK(1) | SIM_PIN_MASK(2), NULL};
     int d0, d1;
     sim_clock_init(&clk);
     sim_violation_log_init(&log_);
@@ -140,7 +141,7 @@ static void test_pinbus_resolution(void)
     CHECK_EQ_INT(last_t, 77);
     sim_pinbus_device_drive(&bus, (unsigned)d0, 0, false); /* same level: no event */
     CHECK_EQ_INT(changes[0], 1);
-    sim_pinbus_device_release(&bus, (unsigned)d0, 0);     /* pull-up again */
+    sim_pinbus_device_release(&bus, (unsigned)d0, 0); /* pull-up again */
     CHECK(sim_pinbus_read(&bus, 0));
     CHECK_EQ_INT(changes[0], 2);
     /* Keeper holds the last driven level. */

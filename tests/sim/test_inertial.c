@@ -11,7 +11,7 @@ static void test_quantise(void)
     /* 14-bit gyro at 0.05 deg/s: +300 deg/s = 6000 counts (0x1770). */
     CHECK_EQ_INT(sim_quantise(300.0, 0.05, 14, &sat), 6000);
     CHECK(!sat);
-    CHECK_EQ_INT(sim_quantise(-0.025, 0.05, 14, NULL), -1);   /* half away from zero */
+    CHECK_EQ_INT(sim_quantise(-0.025, 0.05, 14, NULL), -1); /* half away from zero */
     CHECK_EQ_INT(sim_quantise(0.0249, 0.05, 14, NULL), 0);
     CHECK_EQ_INT(sim_quantise(1000.0, 0.05, 14, &sat), 8191);
     CHECK(sat);

@@ -16,13 +16,22 @@ static struct spi_dev dev;
 
 /* A slow part: 1 MHz, 500 ns setup and hold, 10 us stall, 100 ns MOSI setup, 200 ns tDAV. */
 static const struct sim_spi_timing limits = {
-    .min_period_ns = 1000, .min_half_ns = 0, .min_cs_setup_ns = 500, .min_cs_hold_ns = 500,
-    .min_stall_ns = 10000, .mosi_setup_ns = 100, .miso_delay_ns = 200,
+    .min_period_ns = 1000,
+    .min_half_ns = 0,
+    .min_cs_setup_ns = 500,
+    .min_cs_hold_ns = 500,
+    .min_stall_ns = 10000,
+    .mosi_setup_ns = 100,
+    .miso_delay_ns = 200,
 };
 
 /* A master that meets every limit. */
 static const struct spi_timing good = {
-    .sclk_period_ns = 1000, .cs_setup_ns = 500, .cs_hold_ns = 500, .stall_ns = 10000, .gap_ns = 0,
+    .sclk_period_ns = 1000,
+    .cs_setup_ns = 500,
+    .cs_hold_ns = 500,
+    .stall_ns = 10000,
+    .gap_ns = 0,
 };
 
 static void setup(uint8_t part_mode, uint8_t part_bits, uint8_t master_mode, uint8_t master_bits,
@@ -95,7 +104,7 @@ static void test_cs_setup_too_short(void)
     CHECK_EQ_INT(board.log.v[0].measured_ns, 100);
     CHECK_EQ_INT(board.log.v[0].limit_ns, 500);
     /* The first (shifting) edge was missed: every bit out comes one bit late. */
-    CHECK_EQ_HEX(rx, 0x2D52); /* 0x5AA5 >> 1: the MSB (0) is repeated */
+    CHECK_EQ_HEX(rx, 0x2D52);             /* 0x5AA5 >> 1: the MSB (0) is repeated */
     CHECK_EQ_HEX(part.rx_log[0], 0x1234); /* sampling edges were all seen */
 }
 

@@ -19,8 +19,8 @@ static struct sim_vcd vcd;
 struct decoded {
     unsigned n;
     uint16_t mosi[32], miso[32];
-    unsigned frames;        /* CS periods */
-    unsigned partial;       /* CS rose mid-word */
+    unsigned frames;  /* CS periods */
+    unsigned partial; /* CS rose mid-word */
     unsigned vars;
     unsigned long long last_t;
     int time_backwards;

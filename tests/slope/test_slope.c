@@ -10,15 +10,21 @@
 #include <string.h>
 
 #if UNIT_REDUCED
-#define SWEEP 400   /* QEMU: soft-float references are slow */
+#define SWEEP 400 /* QEMU: soft-float references are slow */
 #else
 #define SWEEP 20000
 #endif
 
 static const double D2R = 3.14159265358979323846 / 180.0;
 
-static double q16(int32_t x) { return x / 65536.0; }
-static int32_t to_q16(double x) { return (int32_t)lround(x * 65536.0); }
+static double q16(int32_t x)
+{
+    return x / 65536.0;
+}
+static int32_t to_q16(double x)
+{
+    return (int32_t)lround(x * 65536.0);
+}
 
 static double k_exact(double r)
 {
@@ -26,7 +32,10 @@ static double k_exact(double r)
     int i;
     for (i = 0; i < 200; i++) {
         double m = 0.5 * (lo + hi);
-        if (erfc(m / sqrt(2.0)) > r) lo = m; else hi = m;
+        if (erfc(m / sqrt(2.0)) > r)
+            lo = m;
+        else
+            hi = m;
     }
     return 0.5 * (lo + hi);
 }
@@ -103,7 +112,7 @@ static void test_exact_cases(void)
     CHECK_OK(slope_estimate(&c, &in, &r));
     CHECK_EQ_INT(r.slope_deg, FX_Q16_INT(30)); /* asin(0.5) is exact in fx */
     CHECK_NEAR(q16(r.grade_pct), 100.0 * tan(30.0 * D2R), 1.0 / 65536);
-    CHECK_EQ_INT(r.bound_deg, 0);             /* an empty budget */
+    CHECK_EQ_INT(r.bound_deg, 0); /* an empty budget */
     CHECK(r.valid);
     /* The same slope with the axis mounted the other way round. */
     in.accel_g[0] = -in.accel_g[0];
@@ -179,15 +188,34 @@ static void test_invalid(void)
     memset(&r, 0x5A, sizeof(r));
     CHECK_ERR(slope_estimate(&c, &in, &r), INC_ERR_INVAL);
     CHECK(!r.valid && r.flags == 0 && r.grade_pct == 0);
-    bad = c; bad.slope_axis = 3;               CHECK_ERR(slope_cfg_check(&bad), INC_ERR_INVAL);
-    bad = c; bad.method = SLOPE_TWO_AXIS; bad.gravity_axis = 0; CHECK_ERR(slope_cfg_check(&bad), INC_ERR_INVAL);
-    bad = c; bad.method = (enum slope_method)7; CHECK_ERR(slope_cfg_check(&bad), INC_ERR_INVAL);
-    bad = c; bad.budget.offset_g = -1;         CHECK_ERR(slope_cfg_check(&bad), INC_ERR_INVAL);
-    bad = c; bad.budget.sensitivity = FX_Q30_HALF; CHECK_ERR(slope_cfg_check(&bad), INC_ERR_INVAL);
-    bad = c; bad.budget.k_sigma = 0;           CHECK_ERR(slope_cfg_check(&bad), INC_ERR_INVAL);
-    bad = c; bad.max_slope_deg = FX_DEG_90 + 1; CHECK_ERR(slope_cfg_check(&bad), INC_ERR_INVAL);
-    bad = c; bad.max_bound_deg = 0;            CHECK_ERR(slope_cfg_check(&bad), INC_ERR_INVAL);
-    bad = c; bad.magnitude_tol_g = 0;          CHECK_ERR(slope_cfg_check(&bad), INC_ERR_INVAL);
+    bad = c;
+    bad.slope_axis = 3;
+    CHECK_ERR(slope_cfg_check(&bad), INC_ERR_INVAL);
+    bad = c;
+    bad.method = SLOPE_TWO_AXIS;
+    bad.gravity_axis = 0;
+    CHECK_ERR(slope_cfg_check(&bad), INC_ERR_INVAL);
+    bad = c;
+    bad.method = (enum slope_method)7;
+    CHECK_ERR(slope_cfg_check(&bad), INC_ERR_INVAL);
+    bad = c;
+    bad.budget.offset_g = -1;
+    CHECK_ERR(slope_cfg_check(&bad), INC_ERR_INVAL);
+    bad = c;
+    bad.budget.sensitivity = FX_Q30_HALF;
+    CHECK_ERR(slope_cfg_check(&bad), INC_ERR_INVAL);
+    bad = c;
+    bad.budget.k_sigma = 0;
+    CHECK_ERR(slope_cfg_check(&bad), INC_ERR_INVAL);
+    bad = c;
+    bad.max_slope_deg = FX_DEG_90 + 1;
+    CHECK_ERR(slope_cfg_check(&bad), INC_ERR_INVAL);
+    bad = c;
+    bad.max_bound_deg = 0;
+    CHECK_ERR(slope_cfg_check(&bad), INC_ERR_INVAL);
+    bad = c;
+    bad.magnitude_tol_g = 0;
+    CHECK_ERR(slope_cfg_check(&bad), INC_ERR_INVAL);
     CHECK_ERR(slope_cfg_check(NULL), INC_ERR_NULL);
     CHECK_OK(slope_cfg_check(&c));
 }
@@ -222,7 +250,8 @@ static void test_against_double(void)
             in.n_samples = 1u + (uint32_t)(urand() * 5000.0);
             REQUIRE(slope_estimate(&c, &in, &r) == 0);
             e_exact = fabs(s) * 0.002 + q16(c.budget.offset_g) + q16(c.budget.nonlinearity_g) +
-                      q16(c.budget.temperature_g) + 6.0 * q16(c.budget.noise_sigma_g) / sqrt(in.n_samples);
+                      q16(c.budget.temperature_g) +
+                      6.0 * q16(c.budget.noise_sigma_g) / sqrt(in.n_samples);
             /* e_a is rounded up, by at most 3 LSB */
             CHECK(q16(r.accel_bound_g) >= e_exact - 1e-9);
             CHECK(q16(r.accel_bound_g) <= e_exact + 3.0 / 65536);
@@ -231,12 +260,15 @@ static void test_against_double(void)
                 double e_s = e_exact, e_g = e_exact - fabs(s) * 0.002 + fabs(g) * 0.002;
                 if (m == 0) {
                     t = asin(s) / D2R;
-                    b = fmax(asin(fmin(1.0, s + e_s)) / D2R - t, t - asin(fmax(-1.0, s - e_s)) / D2R);
+                    b = fmax(asin(fmin(1.0, s + e_s)) / D2R - t,
+                             t - asin(fmax(-1.0, s - e_s)) / D2R);
                 } else {
                     int k;
                     t = atan2(s, g) / D2R;
                     for (k = 0; k < 4; k++) {
-                        double d = fabs(atan2(s + ((k & 1) ? e_s : -e_s), g + ((k & 2) ? e_g : -e_g)) / D2R - t);
+                        double d = fabs(
+                            atan2(s + ((k & 1) ? e_s : -e_s), g + ((k & 2) ? e_g : -e_g)) / D2R -
+                            t);
                         b = fmax(b, d);
                     }
                 }
@@ -244,14 +276,14 @@ static void test_against_double(void)
             worst_t = fmax(worst_t, fabs(q16(r.slope_deg) - t) * 65536.0);
             worst_b = fmax(worst_b, (q16(r.bound_deg) - b) * 65536.0);
             CHECK_NEAR(q16(r.slope_deg), t, 1.0 / 65536);
-            CHECK(q16(r.bound_deg) >= b - 2.0 / 65536);               /* never under-bounds */
+            CHECK(q16(r.bound_deg) >= b - 2.0 / 65536); /* never under-bounds */
             CHECK(q16(r.bound_deg) <= b + 0.003 / cos(t * D2R) + 2.0 / 65536);
             CHECK_NEAR(q16(r.grade_pct), 100.0 * tan(q16(r.slope_deg) * D2R), 1.0 / 65536);
         }
     }
     printf("max |slope error| %.2f LSB; bound above the exact one by at most %.1f LSB "
-           "(e_a rounded up) over %d cases\n", worst_t,
-           worst_b, 2 * SWEEP);
+           "(e_a rounded up) over %d cases\n",
+           worst_t, worst_b, 2 * SWEEP);
 }
 
 static void test_grade(void)
@@ -295,11 +327,11 @@ static void test_sigma_factor(void)
     CHECK_NEAR(q16(k), 6.0, 0.005);
     CHECK_ERR(slope_sigma_factor(0, 100, &k), INC_ERR_INVAL);
     CHECK_ERR(slope_sigma_factor(100, 0, &k), INC_ERR_INVAL);
-    CHECK_OK(slope_sigma_factor(100, 65536, &k));              /* r = 1 %: k = 2.576 */
+    CHECK_OK(slope_sigma_factor(100, 65536, &k)); /* r = 1 %: k = 2.576 */
     CHECK_NEAR(q16(k), 2.5758, 0.005);
     CHECK_ERR(slope_sigma_factor(100, 65536 * 7, &k), INC_ERR_INVAL); /* r = 7 % > 2^-4 */
-    CHECK_NEAR(q16(k), 2.5758, 0.005);                        /* untouched */
-    CHECK_OK(slope_sigma_factor(4294967295u, 1, &k));          /* the smallest r: 2^-48 */
+    CHECK_NEAR(q16(k), 2.5758, 0.005);                                /* untouched */
+    CHECK_OK(slope_sigma_factor(4294967295u, 1, &k));                 /* the smallest r: 2^-48 */
     CHECK_NEAR(q16(k), k_exact(1.0 / 65536.0 / 4294967295.0), 0.005);
     CHECK_ERR(slope_sigma_factor(100, 100, NULL), INC_ERR_NULL);
 }

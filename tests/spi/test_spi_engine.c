@@ -15,12 +15,21 @@ static struct spi_dev dev;
 
 /* Limits of the test part: 2 MHz, 100 ns setup/hold, 1 us stall, 40 ns output delay. */
 static const struct sim_spi_timing part_timing = {
-    .min_period_ns = 500, .min_half_ns = 200, .min_cs_setup_ns = 100, .min_cs_hold_ns = 100,
-    .min_stall_ns = 1000, .mosi_setup_ns = 20, .miso_delay_ns = 40,
+    .min_period_ns = 500,
+    .min_half_ns = 200,
+    .min_cs_setup_ns = 100,
+    .min_cs_hold_ns = 100,
+    .min_stall_ns = 1000,
+    .mosi_setup_ns = 20,
+    .miso_delay_ns = 40,
 };
 
 static const struct spi_timing master_timing = {
-    .sclk_period_ns = 500, .cs_setup_ns = 100, .cs_hold_ns = 100, .stall_ns = 1000, .gap_ns = 0,
+    .sclk_period_ns = 500,
+    .cs_setup_ns = 100,
+    .cs_hold_ns = 100,
+    .stall_ns = 1000,
+    .gap_ns = 0,
 };
 
 /* CS edges, recorded by a pin listener, to measure bus time. */

@@ -85,7 +85,7 @@ static void test_exact_window(void)
     const struct still_window *w;
     bool done = false;
     unsigned i;
-    c.gyro_var_max = 1;   /* 1.25 > 1: not quiet */
+    c.gyro_var_max = 1; /* 1.25 > 1: not quiet */
     REQUIRE(still_init(&s, &c) == INC_OK);
     for (i = 0; i < 4u; i++) {
         const int32_t g[3] = {xs[i], ys[i], zs[i]}, a[3] = {5, 5, 5};
@@ -96,9 +96,9 @@ static void test_exact_window(void)
     REQUIRE(w != NULL);
     CHECK_EQ_INT(w->gyro_mean[0], 3);
     CHECK_EQ_INT(w->gyro_mean[1], 1);
-    CHECK_EQ_INT(w->gyro_mean[2], -3);  /* -2.5: ties away from zero */
+    CHECK_EQ_INT(w->gyro_mean[2], -3); /* -2.5: ties away from zero */
     CHECK_EQ_INT(w->gyro_var[0], 1);
-    CHECK_EQ_INT(w->gyro_var[1], 1);    /* exactly 1 */
+    CHECK_EQ_INT(w->gyro_var[1], 1); /* exactly 1 */
     CHECK_EQ_INT(w->accel_var[0], 0);
     CHECK_EQ_INT(w->accel_mean[2], 5);
     CHECK(!w->quiet);
@@ -121,7 +121,7 @@ static void test_state_machine(void)
     REQUIRE(still_init(&s, &c) == INC_OK);
     CHECK(still_state_get(&s) == STILL_UNKNOWN);
     push_const(&s, 7, -9, 3);
-    CHECK(still_state_get(&s) == STILL_UNKNOWN);       /* no complete window yet */
+    CHECK(still_state_get(&s) == STILL_UNKNOWN); /* no complete window yet */
     push_const(&s, 7, -9, 1);
     CHECK(still_state_get(&s) == STILL_SETTLING);
     push_const(&s, 7, -9, 4);
@@ -130,7 +130,7 @@ static void test_state_machine(void)
     CHECK(still_state_get(&s) == STILL_AT_REST);
     CHECK_EQ_INT(still_motion_count(&s), 0);
     push_const(&s, 7, -9, 3);
-    push_const(&s, 100, -9, 1);                         /* one jolt */
+    push_const(&s, 100, -9, 1); /* one jolt */
     CHECK(still_state_get(&s) == STILL_MOVING);
     CHECK_EQ_INT(still_motion_count(&s), 1);
     push_const(&s, 7, -9, 4);
@@ -158,8 +158,9 @@ static void test_mean_norm_drift(void)
     c.accel_norm_tol = 50;
     REQUIRE(still_init(&s, &c) == INC_OK);
     {
-        const int32_t cases[6][3] = {{0, 0, 1000}, {600, 0, 800}, {0, 0, 1051},
-                                     {0, 0, 0}, {INT32_MAX, INT32_MIN, INT32_MAX}, {0, -950, 0}};
+        const int32_t cases[6][3] = {
+            {0, 0, 1000}, {600, 0, 800}, {0, 0, 1051}, {0, 0, 0}, {INT32_MAX, INT32_MIN, INT32_MAX},
+            {0, -950, 0}};
         const bool quiet[6] = {true, true, false, false, false, true};
         unsigned k, i;
         for (k = 0; k < 6u; k++) {
@@ -177,7 +178,7 @@ static void test_mean_norm_drift(void)
     c.accel_drift_max = 3;
     REQUIRE(still_init(&s, &c) == INC_OK);
     push_const(&s, 0, 0, 4);
-    CHECK(still_last(&s)->quiet);                        /* no previous window: no drift test */
+    CHECK(still_last(&s)->quiet); /* no previous window: no drift test */
     push_const(&s, 0, 3, 4);
     CHECK(still_last(&s)->quiet);
     push_const(&s, 0, 7, 4);
@@ -189,7 +190,8 @@ static void test_overrange(void)
 {
     struct still s;
     struct still_cfg c = base_cfg();
-    const int32_t lo[3] = {INT32_MIN, INT32_MIN, INT32_MIN}, hi[3] = {INT32_MAX, INT32_MAX, INT32_MAX};
+    const int32_t lo[3] = {INT32_MIN, INT32_MIN, INT32_MIN},
+                  hi[3] = {INT32_MAX, INT32_MAX, INT32_MAX};
     const int32_t z[3] = {0, 0, 0};
     c.gyro_var_max = STILL_VAR_LIMIT;
     c.accel_var_max = STILL_VAR_LIMIT;
@@ -229,9 +231,9 @@ static void test_overrange(void)
 /* ---- simulated ADIS-like data -------------------------------------------------------------- */
 
 #define FS 819.2
-#define GYRO_LSB 0.05     /* deg/s */
-#define ACCEL_LSB 0.001   /* g (ADIS16364) */
-#define W 819u            /* 1 s windows */
+#define GYRO_LSB 0.05   /* deg/s */
+#define ACCEL_LSB 0.001 /* g (ADIS16364) */
+#define W 819u          /* 1 s windows */
 
 enum motion { REST, VIBRATION, TILT, SPIN };
 
@@ -283,12 +285,12 @@ static void test_simulated_adis(void)
     struct still s;
     struct still_cfg c;
     unsigned a;
-    const double gsd = SIM_NOISE_ADIS_GYRO_ARW * sqrt(FS) / GYRO_LSB;   /* 17.7 LSB */
+    const double gsd = SIM_NOISE_ADIS_GYRO_ARW * sqrt(FS) / GYRO_LSB;     /* 17.7 LSB */
     const double asd = SIM_NOISE_ADIS_ACCEL_WHITE * sqrt(FS) / ACCEL_LSB; /* 5.7 LSB */
     memset(&nc, 0, sizeof(nc));
     for (a = 0; a < 3u; a++) {
         nc.ch[SIM_NOISE_GYRO(a)].white = SIM_NOISE_ADIS_GYRO_ARW;
-        nc.ch[SIM_NOISE_GYRO(a)].bias = 0.4 * (a + 1u);  /* an uncalibrated bias */
+        nc.ch[SIM_NOISE_GYRO(a)].bias = 0.4 * (a + 1u); /* an uncalibrated bias */
         nc.ch[SIM_NOISE_ACCEL(a)].white = SIM_NOISE_ADIS_ACCEL_WHITE;
     }
     nc.seed = 99;
@@ -299,10 +301,10 @@ static void test_simulated_adis(void)
     c.windows_required = 3;
     c.gyro_var_max = (uint64_t)ceil((gsd * gsd + 1.0 / 12.0) * (1.0 + 6.0 * sqrt(2.0 / (W - 1))));
     c.accel_var_max = (uint64_t)ceil((asd * asd + 1.0 / 12.0) * (1.0 + 6.0 * sqrt(2.0 / (W - 1))));
-    c.gyro_mean_max = 60;       /* 3 deg/s: above any uncalibrated bias */
+    c.gyro_mean_max = 60; /* 3 deg/s: above any uncalibrated bias */
     c.accel_one_g = 1000;
     c.accel_norm_tol = 50;
-    c.accel_drift_max = 3;      /* 3 mg between 1 s windows (mean noise 0.2 mg) */
+    c.accel_drift_max = 3; /* 3 mg between 1 s windows (mean noise 0.2 mg) */
     printf("  thresholds: gyro var %u LSB^2 (sd %.1f), accel var %u LSB^2 (sd %.1f)\n",
            (unsigned)c.gyro_var_max, gsd, (unsigned)c.accel_var_max, asd);
     REQUIRE(still_init(&s, &c) == INC_OK);
@@ -314,7 +316,7 @@ static void test_simulated_adis(void)
     CHECK(still_last(&s)->why & STILL_WHY_GYRO_VAR);
     CHECK(still_last(&s)->why & STILL_WHY_ACCEL_VAR);
     still_reset(&s);
-    CHECK(simulate(&s, &nm, TILT) <= 1u);        /* the first window has no drift reference */
+    CHECK(simulate(&s, &nm, TILT) <= 1u); /* the first window has no drift reference */
     CHECK(still_last(&s)->why & STILL_WHY_ACCEL_DRIFT);
     still_reset(&s);
     CHECK_EQ_INT(simulate(&s, &nm, SPIN), 0);
@@ -352,16 +354,16 @@ static void test_thermal_basic(void)
     }
     CHECK_OK(still_thermal_last(&t, &last));
     CHECK_EQ_INT(last, 10);
-    CHECK(!still_thermal_settled(&t));                 /* 2 of 3 points */
+    CHECK(!still_thermal_settled(&t)); /* 2 of 3 points */
     CHECK_ERR(still_thermal_change(&t, &ch), INC_ERR_STATE);
     for (i = 0; i < 4u; i++) {
-        CHECK_OK(still_thermal_push(&t, 12, NULL));    /* point 12: change 2 > 1 */
+        CHECK_OK(still_thermal_push(&t, 12, NULL)); /* point 12: change 2 > 1 */
     }
     CHECK_OK(still_thermal_change(&t, &ch));
     CHECK_EQ_INT(ch, 2);
     CHECK(!still_thermal_settled(&t));
     for (i = 0; i < 8u; i++) {
-        CHECK_OK(still_thermal_push(&t, 11, NULL));    /* window 12, 11, 11: change 1 */
+        CHECK_OK(still_thermal_push(&t, 11, NULL)); /* window 12, 11, 11: change 1 */
     }
     CHECK_OK(still_thermal_change(&t, &ch));
     CHECK_EQ_INT(ch, 1);
@@ -413,7 +415,7 @@ static void test_thermal_warmup(void)
     }
     printf("  thermal: settled first at %.1f s\n", first_settled);
     CHECK(first_settled > 200.0 && first_settled < 600.0);
-    CHECK(still_thermal_settled(&t));                  /* 30 s after the step it settles again */
+    CHECK(still_thermal_settled(&t)); /* 30 s after the step it settles again */
 }
 
 int main(void)

@@ -79,66 +79,66 @@ void unit_fail(const char *file, int line, const char *fmt, ...)
 void unit_begin(const char *name);
 int unit_report(void);
 
-#define UNIT_RUN(fn)       \
-    do {                   \
-        unit_begin(#fn);   \
-        fn();              \
+#define UNIT_RUN(fn)     \
+    do {                 \
+        unit_begin(#fn); \
+        fn();            \
     } while (0)
 
-#define CHECK(cond)                                                        \
-    do {                                                                   \
-        unit_checks++;                                                     \
-        if (!(cond)) unit_fail(__FILE__, __LINE__, "CHECK(%s)", #cond);    \
+#define CHECK(cond)                                                     \
+    do {                                                                \
+        unit_checks++;                                                  \
+        if (!(cond)) unit_fail(__FILE__, __LINE__, "CHECK(%s)", #cond); \
     } while (0)
 
-#define REQUIRE(cond)                                                      \
-    do {                                                                   \
-        unit_checks++;                                                     \
-        if (!(cond)) {                                                     \
-            unit_fail(__FILE__, __LINE__, "REQUIRE(%s)", #cond);           \
-            return;                                                        \
-        }                                                                  \
+#define REQUIRE(cond)                                            \
+    do {                                                         \
+        unit_checks++;                                           \
+        if (!(cond)) {                                           \
+            unit_fail(__FILE__, __LINE__, "REQUIRE(%s)", #cond); \
+            return;                                              \
+        }                                                        \
     } while (0)
 
-#define CHECK_EQ_INT(a, b)                                                              \
-    do {                                                                                \
-        long long unit_a_ = (long long)(a), unit_b_ = (long long)(b);                   \
-        unit_checks++;                                                                  \
-        if (unit_a_ != unit_b_)                                                         \
+#define CHECK_EQ_INT(a, b)                                                                     \
+    do {                                                                                       \
+        long long unit_a_ = (long long)(a), unit_b_ = (long long)(b);                          \
+        unit_checks++;                                                                         \
+        if (unit_a_ != unit_b_)                                                                \
             unit_fail(__FILE__, __LINE__, "%s == %s: %lld != %lld", #a, #b, unit_a_, unit_b_); \
     } while (0)
 
-#define CHECK_EQ_HEX(a, b)                                                              \
-    do {                                                                                \
-        unsigned long long unit_a_ = (unsigned long long)(a), unit_b_ = (unsigned long long)(b); \
-        unit_checks++;                                                                  \
-        if (unit_a_ != unit_b_)                                                         \
+#define CHECK_EQ_HEX(a, b)                                                                         \
+    do {                                                                                           \
+        unsigned long long unit_a_ = (unsigned long long)(a), unit_b_ = (unsigned long long)(b);   \
+        unit_checks++;                                                                             \
+        if (unit_a_ != unit_b_)                                                                    \
             unit_fail(__FILE__, __LINE__, "%s == %s: 0x%llx != 0x%llx", #a, #b, unit_a_, unit_b_); \
     } while (0)
 
 /* |a - b| <= tol, in integers (64-bit). */
-#define CHECK_NEAR_INT(a, b, tol)                                                       \
-    do {                                                                                \
+#define CHECK_NEAR_INT(a, b, tol)                                                                 \
+    do {                                                                                          \
         long long unit_a_ = (long long)(a), unit_b_ = (long long)(b), unit_t_ = (long long)(tol); \
-        long long unit_d_ = unit_a_ > unit_b_ ? unit_a_ - unit_b_ : unit_b_ - unit_a_;  \
-        unit_checks++;                                                                  \
-        if (unit_d_ > unit_t_)                                                          \
-            unit_fail(__FILE__, __LINE__, "%s ~ %s: %lld vs %lld, |diff| %lld > %lld", #a, #b, \
-                      unit_a_, unit_b_, unit_d_, unit_t_);                              \
+        long long unit_d_ = unit_a_ > unit_b_ ? unit_a_ - unit_b_ : unit_b_ - unit_a_;            \
+        unit_checks++;                                                                            \
+        if (unit_d_ > unit_t_)                                                                    \
+            unit_fail(__FILE__, __LINE__, "%s ~ %s: %lld vs %lld, |diff| %lld > %lld", #a, #b,    \
+                      unit_a_, unit_b_, unit_d_, unit_t_);                                        \
     } while (0)
 
 /* |a - b| <= tol, in double (tests only; firmware never uses floating point). */
-#define CHECK_NEAR(a, b, tol)                                                           \
-    do {                                                                                \
-        double unit_a_ = (double)(a), unit_b_ = (double)(b), unit_t_ = (double)(tol);   \
-        double unit_d_ = unit_a_ > unit_b_ ? unit_a_ - unit_b_ : unit_b_ - unit_a_;     \
-        unit_checks++;                                                                  \
-        if (!(unit_d_ <= unit_t_))                                                      \
+#define CHECK_NEAR(a, b, tol)                                                                  \
+    do {                                                                                       \
+        double unit_a_ = (double)(a), unit_b_ = (double)(b), unit_t_ = (double)(tol);          \
+        double unit_d_ = unit_a_ > unit_b_ ? unit_a_ - unit_b_ : unit_b_ - unit_a_;            \
+        unit_checks++;                                                                         \
+        if (!(unit_d_ <= unit_t_))                                                             \
             unit_fail(__FILE__, __LINE__, "%s ~ %s: %.9g vs %.9g, |diff| %.3g > %.3g", #a, #b, \
-                      unit_a_, unit_b_, unit_d_, unit_t_);                              \
+                      unit_a_, unit_b_, unit_d_, unit_t_);                                     \
     } while (0)
 
-#define CHECK_OK(expr)  CHECK_EQ_INT((expr), 0)
+#define CHECK_OK(expr) CHECK_EQ_INT((expr), 0)
 #define CHECK_ERR(expr, err) CHECK_EQ_INT((expr), (err))
 
 #ifdef __cplusplus

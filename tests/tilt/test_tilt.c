@@ -69,32 +69,48 @@ static void test_accel_angles_exact(void)
     int32_t a[3];
     fx_q16_t r, p;
     const int32_t one = FX_Q16_ONE;
-    a[0] = 0; a[1] = 0; a[2] = one;
+    a[0] = 0;
+    a[1] = 0;
+    a[2] = one;
     tilt_accel_angles(a, &r, &p);
     CHECK_EQ_INT(r, 0);
     CHECK_EQ_INT(p, 0);
-    a[0] = 0; a[1] = one; a[2] = one;
+    a[0] = 0;
+    a[1] = one;
+    a[2] = one;
     tilt_accel_angles(a, &r, &p);
     CHECK_EQ_INT(r, FX_DEG_45);
     CHECK_EQ_INT(p, 0);
-    a[0] = -one; a[1] = 0; a[2] = one;
+    a[0] = -one;
+    a[1] = 0;
+    a[2] = one;
     tilt_accel_angles(a, &r, &p);
     CHECK_EQ_INT(p, FX_DEG_45);
-    a[0] = one; a[1] = 0; a[2] = 0;
+    a[0] = one;
+    a[1] = 0;
+    a[2] = 0;
     tilt_accel_angles(a, &r, &p);
     CHECK_EQ_INT(p, -FX_DEG_90);
-    a[0] = 0; a[1] = -one; a[2] = 0;
+    a[0] = 0;
+    a[1] = -one;
+    a[2] = 0;
     tilt_accel_angles(a, &r, &p);
     CHECK_EQ_INT(r, -FX_DEG_90);
-    a[0] = 0; a[1] = 0; a[2] = -one;
+    a[0] = 0;
+    a[1] = 0;
+    a[2] = -one;
     tilt_accel_angles(a, &r, &p);
     CHECK_EQ_INT(r, FX_DEG_180);
-    a[0] = 0; a[1] = 0; a[2] = 0;
+    a[0] = 0;
+    a[1] = 0;
+    a[2] = 0;
     tilt_accel_angles(a, &r, &p);
     CHECK_EQ_INT(r, 0);
     CHECK_EQ_INT(p, 0);
     /* extreme inputs are defined */
-    a[0] = INT32_MIN; a[1] = INT32_MIN; a[2] = INT32_MIN;
+    a[0] = INT32_MIN;
+    a[1] = INT32_MIN;
+    a[2] = INT32_MIN;
     tilt_accel_angles(a, &r, &p);
     CHECK_NEAR_INT(p, q16(35.2643897), 2);
     tilt_accel_angles(a, NULL, NULL);
@@ -114,7 +130,8 @@ static void test_accel_angles_accuracy(void)
             tilt_accel_angles(a, &r, &p);
             rr = atan2(d16(a[1]), d16(a[2])) / DEG;
             pr = atan2(-d16(a[0]), sqrt(d16(a[1]) * d16(a[1]) + d16(a[2]) * d16(a[2]))) / DEG;
-            if (fabs(d16(r) - rr) * 65536 > worst && fabs(rr) < 179.999) worst = fabs(d16(r) - rr) * 65536;
+            if (fabs(d16(r) - rr) * 65536 > worst && fabs(rr) < 179.999)
+                worst = fabs(d16(r) - rr) * 65536;
             if (fabs(d16(p) - pr) * 65536 > worst) worst = fabs(d16(p) - pr) * 65536;
         }
     }
@@ -198,8 +215,10 @@ static void test_step4_printed_drifts(void)
     /* (1 - K2inf): recover K2inf from the critical gain Kb = (1 - sqrt(1 - K))^2 / K */
     (void)tilt_feedback_gain(c.axis[0].q_angle, c.axis[0].r_angle, DT_NS, &kb);
     k2 = 4.0 * kb / 1073741824.0; /* ~K/4 to first order */
-    printf("printed: drift %.4f / %.4f deg/s (biases 0.2 / -0.3, (1-K2) ~ %.5f), error after %.0f s "
-           "%.3f / %.3f deg\n", r.slope[0], r.slope[1], 1 - k2, TILT_SECONDS, r.err[0], r.err[1]);
+    printf(
+        "printed: drift %.4f / %.4f deg/s (biases 0.2 / -0.3, (1-K2) ~ %.5f), error after %.0f s "
+        "%.3f / %.3f deg\n",
+        r.slope[0], r.slope[1], 1 - k2, TILT_SECONDS, r.err[0], r.err[1]);
     CHECK_NEAR(r.slope[0], 0.2 * (1 - k2), 0.2 * 0.02);
     CHECK_NEAR(r.slope[1], -0.3 * (1 - k2), 0.3 * 0.02);
     CHECK(fabs(r.err[0]) > 0.9 * 0.2 * TILT_SECONDS * 0.9);
@@ -382,7 +401,8 @@ static void test_gaps(void)
         CHECK_OK(tilt_step(&b, &in, DT_NS, &ob));
         input(&in, 1, 2, 10.0, -20.0, 0);
         in.accel_g[2] += q16(0.5); /* rejected: gyro only */
-        for (i = 0; i < 3; i++) CHECK_OK(tilt_step(&a, &in, DT_NS, &oa));
+        for (i = 0; i < 3; i++)
+            CHECK_OK(tilt_step(&a, &in, DT_NS, &oa));
         CHECK_OK(tilt_step(&b, &in, 3 * DT_NS + 1, &ob)); /* 3662110 ns -> the same Q30 dt */
         CHECK_EQ_INT(oa.angle_deg[0], ob.angle_deg[0]);
         CHECK_EQ_INT(oa.angle_deg[1], ob.angle_deg[1]);
@@ -488,29 +508,41 @@ static void test_not_started_and_bad_input(void)
     CHECK_ERR(tilt_init(&t, NULL), INC_ERR_NULL);
     CHECK_ERR(tilt_step(&t, &in, DT_NS, &o), INC_ERR_STATE);
     CHECK(!o.valid);
-    bad = c; bad.mode = 7;
+    bad = c;
+    bad.mode = 7;
     CHECK_ERR(tilt_init(&t, &bad), INC_ERR_INVAL);
-    bad = c; bad.accel_tol_g = 0;
+    bad = c;
+    bad.accel_tol_g = 0;
     CHECK_ERR(tilt_config_check(&bad), INC_ERR_INVAL);
-    bad = c; bad.accel_tol_g = FX_Q16_HALF + 1;
+    bad = c;
+    bad.accel_tol_g = FX_Q16_HALF + 1;
     CHECK_ERR(tilt_config_check(&bad), INC_ERR_INVAL);
-    bad = c; bad.gyro_limit_dps = 0;
+    bad = c;
+    bad.gyro_limit_dps = 0;
     CHECK_ERR(tilt_config_check(&bad), INC_ERR_INVAL);
-    bad = c; bad.dt_max_ns = 0;
+    bad = c;
+    bad.dt_max_ns = 0;
     CHECK_ERR(tilt_config_check(&bad), INC_ERR_INVAL);
-    bad = c; bad.dt_max_ns = 1000000001u;
+    bad = c;
+    bad.dt_max_ns = 1000000001u;
     CHECK_ERR(tilt_config_check(&bad), INC_ERR_INVAL);
-    bad = c; bad.axis[1].q_angle = 0;
+    bad = c;
+    bad.axis[1].q_angle = 0;
     CHECK_ERR(tilt_config_check(&bad), INC_ERR_INVAL);
-    bad = c; bad.axis[0].r_angle = 0;
+    bad = c;
+    bad.axis[0].r_angle = 0;
     CHECK_ERR(tilt_config_check(&bad), INC_ERR_INVAL);
-    bad = c; bad.axis[0].q_bias = -1;
+    bad = c;
+    bad.axis[0].q_bias = -1;
     CHECK_ERR(tilt_config_check(&bad), INC_ERR_INVAL);
-    bad = c; bad.axis[0].p0_angle = TILT_VAR_CAP + 1;
+    bad = c;
+    bad.axis[0].p0_angle = TILT_VAR_CAP + 1;
     CHECK_ERR(tilt_config_check(&bad), INC_ERR_INVAL);
-    bad = c; bad.axis[0].bias_gain = FX_Q30_ONE + 1;
+    bad = c;
+    bad.axis[0].bias_gain = FX_Q30_ONE + 1;
     CHECK_ERR(tilt_config_check(&bad), INC_ERR_INVAL);
-    bad = c; bad.axis[1].bias0_dps = c.gyro_limit_dps;
+    bad = c;
+    bad.axis[1].bias0_dps = c.gyro_limit_dps;
     CHECK_ERR(tilt_config_check(&bad), INC_ERR_INVAL);
     CHECK_ERR(tilt_config_check(NULL), INC_ERR_NULL);
     CHECK_ERR(tilt_config_default(NULL, DT_NS), INC_ERR_NULL);

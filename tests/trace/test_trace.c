@@ -97,7 +97,7 @@ static int driver(const struct spi_bus *bus, const struct hal *hal, uint16_t bad
     waits[1] = hal_irq_wait(hal, hal_now_ns(hal) + 50000u); /* nothing until 200 us: times out */
     err = spi_xfer1(&dev, 0x7000, out + 7);
     if (err) return err;
-    hal_delay_ns(hal, 200000u);                             /* the 200 us pulse comes in here */
+    hal_delay_ns(hal, 200000u); /* the 200 us pulse comes in here */
     err = spi_xfer1(&dev, 0x7100, out + 8);
     hal_irq_attach(hal, SIM_BOARD_DR(0), HAL_EDGE_RISING, NULL, NULL);
     return err;
@@ -135,7 +135,7 @@ static void test_record(void)
     REQUIRE(f != NULL);
     while (trace_parse_next(f, &line, &r, msg, sizeof(msg)) == 1) {
         if (r.kind == TRACE_PERIOD) {
-            if (periods == 3) {  /* the held period */
+            if (periods == 3) { /* the held period */
                 CHECK_EQ_INT(r.n, 4);
                 CHECK_EQ_HEX(r.mosi[0], 0x3E00);
                 CHECK_EQ_HEX(r.miso[0], 0x3C00);
@@ -314,7 +314,8 @@ static void test_vcd_conversion(void)
     REQUIRE(fv != NULL);
     fputs("$timescale 1 us $end\n$var wire 1 ! sclk $end\n$var wire 1 \" mosi $end\n"
           "$var wire 1 # miso $end\n$var wire 1 $ cs1 $end\n$enddefinitions $end\n"
-          "#0\n1!\n1$\n#1\n0$\n#2\n0!\n#3\n1!\n#4\n1$\n", fv);
+          "#0\n1!\n1$\n#1\n0$\n#2\n0!\n#3\n1!\n#4\n1$\n",
+          fv);
     fclose(fv);
     fv = fopen("trace_cap.vcd", "r");
     ft = fopen("trace_conv.trace", "w");
@@ -333,7 +334,8 @@ int main(int argc, char **argv)
     UNIT_RUN(test_record);
     if (argc > 1 && strcmp(argv[1], "--regenerate") == 0) {
         /* Refresh the golden trace from a live run (review the diff before committing). */
-        return rename("trace_test.trace", GOLDEN_DIR "/loopback_driver.trace") == 0 ? unit_report() : 1;
+        return rename("trace_test.trace", GOLDEN_DIR "/loopback_driver.trace") == 0 ? unit_report()
+                                                                                    : 1;
     }
     UNIT_RUN(test_replay_same_results);
     UNIT_RUN(test_replay_divergence);

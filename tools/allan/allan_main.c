@@ -27,7 +27,7 @@
 #include "inclino/sim/noise.h"
 
 #define MAX_POINTS 1024u
-#define ADIS_GYRO_LSB 0.05   /* deg/s per LSB, +-300 deg/s range (sensors.md 3.3) */
+#define ADIS_GYRO_LSB 0.05 /* deg/s per LSB, +-300 deg/s range (sensors.md 3.3) */
 #define ADIS_GYRO_BITS 14u
 
 struct args {
@@ -41,13 +41,14 @@ struct args {
 
 static void usage(void)
 {
-    fprintf(stderr,
-            "usage: allan --csv FILE|- [--col K] [--time-col K | --rate-hz F] [--scale S] [--unit U]\n"
-            "       allan --sim adis|separated [--seconds T] [--seed S] [--sample-hz F]\n"
-            "             [--no-quant] [--theory]\n"
-            "       common: [--per-decade P] [--min-clusters C] [--min-rel-err E]\n"
-            "               [--out curve.csv] [--svg plot.svg]\n"
-            "               [--gnuplot plot.gp [--png plot.png]] [--quiet]\n");
+    fprintf(
+        stderr,
+        "usage: allan --csv FILE|- [--col K] [--time-col K | --rate-hz F] [--scale S] [--unit U]\n"
+        "       allan --sim adis|separated [--seconds T] [--seed S] [--sample-hz F]\n"
+        "             [--no-quant] [--theory]\n"
+        "       common: [--per-decade P] [--min-clusters C] [--min-rel-err E]\n"
+        "               [--out curve.csv] [--svg plot.svg]\n"
+        "               [--gnuplot plot.gp [--png plot.png]] [--quiet]\n");
 }
 
 static int num(const char *s, double *v)
@@ -71,34 +72,60 @@ static int parse(int argc, char **argv, struct args *a)
         const char *o = argv[i];
         const char *v = i + 1 < argc ? argv[i + 1] : NULL;
         double d = 0.0;
-        if (strcmp(o, "--no-quant") == 0) { a->quant = 0; continue; }
-        if (strcmp(o, "--theory") == 0) { a->theory = 1; continue; }
-        if (strcmp(o, "--quiet") == 0) { a->quiet = 1; continue; }
+        if (strcmp(o, "--no-quant") == 0) {
+            a->quant = 0;
+            continue;
+        }
+        if (strcmp(o, "--theory") == 0) {
+            a->theory = 1;
+            continue;
+        }
+        if (strcmp(o, "--quiet") == 0) {
+            a->quiet = 1;
+            continue;
+        }
         if (v == NULL) {
             fprintf(stderr, "allan: %s needs a value\n", o);
             return -1;
         }
         i++;
-        if (strcmp(o, "--csv") == 0) a->csv = v;
-        else if (strcmp(o, "--sim") == 0) a->sim = v;
-        else if (strcmp(o, "--out") == 0) a->out = v;
-        else if (strcmp(o, "--svg") == 0) a->svg = v;
-        else if (strcmp(o, "--gnuplot") == 0) a->gp = v;
-        else if (strcmp(o, "--png") == 0) a->png = v;
-        else if (strcmp(o, "--unit") == 0) a->unit = v;
+        if (strcmp(o, "--csv") == 0)
+            a->csv = v;
+        else if (strcmp(o, "--sim") == 0)
+            a->sim = v;
+        else if (strcmp(o, "--out") == 0)
+            a->out = v;
+        else if (strcmp(o, "--svg") == 0)
+            a->svg = v;
+        else if (strcmp(o, "--gnuplot") == 0)
+            a->gp = v;
+        else if (strcmp(o, "--png") == 0)
+            a->png = v;
+        else if (strcmp(o, "--unit") == 0)
+            a->unit = v;
         else if (num(v, &d) != 0) {
             fprintf(stderr, "allan: %s: '%s' is not a number\n", o, v);
             return -1;
-        } else if (strcmp(o, "--col") == 0 && d >= 0 && d < 1000 && d == floor(d)) a->col = (unsigned)d;
-        else if (strcmp(o, "--time-col") == 0 && d >= 0 && d < 1000 && d == floor(d)) a->time_col = (int)d;
-        else if (strcmp(o, "--rate-hz") == 0 && d > 0) a->rate_hz = d;
-        else if (strcmp(o, "--scale") == 0 && d != 0) a->scale = d;
-        else if (strcmp(o, "--seconds") == 0 && d > 0 && d <= 1e7) a->seconds = d;
-        else if (strcmp(o, "--sample-hz") == 0 && d > 0 && d <= 1e6) a->sample_hz = d;
-        else if (strcmp(o, "--seed") == 0 && d >= 0 && d == floor(d)) a->seed = (unsigned long long)d;
-        else if (strcmp(o, "--per-decade") == 0 && d >= 1 && d <= 100 && d == floor(d)) a->per_decade = (unsigned)d;
-        else if (strcmp(o, "--min-clusters") == 0 && d >= 2) a->min_clusters = d;
-        else if (strcmp(o, "--min-rel-err") == 0 && d > 0 && d < 1) a->max_rel_err = d;
+        } else if (strcmp(o, "--col") == 0 && d >= 0 && d < 1000 && d == floor(d))
+            a->col = (unsigned)d;
+        else if (strcmp(o, "--time-col") == 0 && d >= 0 && d < 1000 && d == floor(d))
+            a->time_col = (int)d;
+        else if (strcmp(o, "--rate-hz") == 0 && d > 0)
+            a->rate_hz = d;
+        else if (strcmp(o, "--scale") == 0 && d != 0)
+            a->scale = d;
+        else if (strcmp(o, "--seconds") == 0 && d > 0 && d <= 1e7)
+            a->seconds = d;
+        else if (strcmp(o, "--sample-hz") == 0 && d > 0 && d <= 1e6)
+            a->sample_hz = d;
+        else if (strcmp(o, "--seed") == 0 && d >= 0 && d == floor(d))
+            a->seed = (unsigned long long)d;
+        else if (strcmp(o, "--per-decade") == 0 && d >= 1 && d <= 100 && d == floor(d))
+            a->per_decade = (unsigned)d;
+        else if (strcmp(o, "--min-clusters") == 0 && d >= 2)
+            a->min_clusters = d;
+        else if (strcmp(o, "--min-rel-err") == 0 && d > 0 && d < 1)
+            a->max_rel_err = d;
         else {
             fprintf(stderr, "allan: bad option or value: %s %s\n", o, v);
             return -1;
@@ -120,7 +147,8 @@ static int parse(int argc, char **argv, struct args *a)
 }
 
 /* Simulated record; fills *ax with the configuration used (for --theory). */
-static int simulate(const struct args *a, double **y, size_t *n, double *dt, struct sim_noise_axis *ax)
+static int simulate(const struct args *a, double **y, size_t *n, double *dt,
+                    struct sim_noise_axis *ax)
 {
     struct sim_noise_cfg cfg;
     struct sim_noise *nm;
@@ -223,8 +251,9 @@ int main(int argc, char **argv)
         return 3;
     }
     if (sim_allan_readoff(pts, count, a.max_rel_err, &r) != INC_OK) {
-        fprintf(stderr, "allan: no point of the curve is certain to %.3g (relative); record "
-                        "longer or pass a larger --min-rel-err\n",
+        fprintf(stderr,
+                "allan: no point of the curve is certain to %.3g (relative); record "
+                "longer or pass a larger --min-rel-err\n",
                 a.max_rel_err > 0.0 ? a.max_rel_err : SIM_ALLAN_MIN_REL_ERR);
         free(pts);
         return 3;
@@ -258,8 +287,9 @@ int main(int argc, char **argv)
     printf("\n");
     if (a.theory) {
         printf("model             ADEV(1 s) %.5g, N %.5g, B %.5g, K %.5g; analytic minimum on "
-               "the grid %.5g\n", sim_noise_adev(&ax, 1.0, dt), ax.white, ax.bias_instability,
-               ax.rrw, sim_noise_adev(&ax, r.tau_min_s, dt));
+               "the grid %.5g\n",
+               sim_noise_adev(&ax, 1.0, dt), ax.white, ax.bias_instability, ax.rrw,
+               sim_noise_adev(&ax, r.tau_min_s, dt));
     }
     if (!a.quiet) {
         printf("tau_s,adev,err%s\n", a.theory ? ",theory" : "");
@@ -284,10 +314,10 @@ int main(int argc, char **argv)
     }
     if (a.svg != NULL) {
         FILE *f = fopen(a.svg, "w");
-        if (f == NULL || sim_allan_write_svg(f, pts, count, theory, &r,
-                                             a.sim != NULL ? "Allan deviation (simulated)"
-                                                           : "Allan deviation",
-                                             a.unit) != INC_OK) {
+        if (f == NULL ||
+            sim_allan_write_svg(f, pts, count, theory, &r,
+                                a.sim != NULL ? "Allan deviation (simulated)" : "Allan deviation",
+                                a.unit) != INC_OK) {
             fprintf(stderr, "allan: cannot write %s\n", a.svg);
             err = 3;
         }

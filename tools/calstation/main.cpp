@@ -26,19 +26,21 @@
 
 using namespace calstation;
 
-namespace {
+namespace
+{
 
 int usage()
 {
-    std::fputs("usage:\n"
-               "  calstation simulate [--part A|<seed>] [--schedule calibration|validation|ambient]\n"
-               "                      [--cycles N] [--samples N] [--noise-seed N] [--binding F,P,R,S,L1,L2]\n"
-               "                      --out FILE.csv\n"
-               "  calstation fit FILE.csv [--tmodel best|none|linear|parabola|lorentz|pwl|lorentz-cubic]\n"
-               "                 [--out RECORD.bin] [--seq N]\n"
-               "  calstation show RECORD.bin\n"
-               "  calstation compare [--cycles N] [--seeds S1,S2,...]\n",
-               stderr);
+    std::fputs(
+        "usage:\n"
+        "  calstation simulate [--part A|<seed>] [--schedule calibration|validation|ambient]\n"
+        "                      [--cycles N] [--samples N] [--noise-seed N] [--binding F,P,R,S,L1,L2]\n"
+        "                      --out FILE.csv\n"
+        "  calstation fit FILE.csv [--tmodel best|none|linear|parabola|lorentz|pwl|lorentz-cubic]\n"
+        "                 [--out RECORD.bin] [--seq N]\n"
+        "  calstation show RECORD.bin\n"
+        "  calstation compare [--cycles N] [--seeds S1,S2,...]\n",
+        stderr);
     return 2;
 }
 
@@ -81,10 +83,14 @@ int cmd_simulate(int argc, char **argv)
             }
         } else if (a == "--schedule") {
             const std::string s = val;
-            if (s == "calibration") cfg.schedule = Schedule::Calibration;
-            else if (s == "validation") cfg.schedule = Schedule::Validation;
-            else if (s == "ambient") cfg.schedule = Schedule::Ambient;
-            else return usage();
+            if (s == "calibration")
+                cfg.schedule = Schedule::Calibration;
+            else if (s == "validation")
+                cfg.schedule = Schedule::Validation;
+            else if (s == "ambient")
+                cfg.schedule = Schedule::Ambient;
+            else
+                return usage();
         } else if (a == "--cycles" && parse_u64(val, v) && v >= 1 && v <= 100) {
             cfg.cycles = static_cast<int>(v);
         } else if (a == "--samples" && parse_u64(val, v) && v >= 1 && v <= 1000000) {
@@ -100,7 +106,8 @@ int cmd_simulate(int argc, char **argv)
             for (int k = 0; k < 6; k++) {
                 const size_t c = b.find(',', pos);
                 if ((k < 5) != (c != std::string::npos)) return usage();
-                const std::string tok = b.substr(pos, c == std::string::npos ? std::string::npos : c - pos);
+                const std::string tok = b.substr(pos, c == std::string::npos ? std::string::npos
+                                                                             : c - pos);
                 if (!parse_u64(tok.c_str(), v) || v > 0xFFFFFFFFull) return usage();
                 cfg.binding[k] = static_cast<uint32_t>(v);
                 pos = c + 1;
@@ -162,10 +169,11 @@ int cmd_fit(int argc, char **argv)
         std::fprintf(stderr, "calstation: %s: %s\n", in.c_str(), e.c_str());
         return 1;
     }
-    std::printf("firmware check (fixed point, firmware/signal/cal, on the quantised record): %zu acc rows, "
-                "max |firmware - double model| = %.2f LSB Q16; max |corrected - true| = %.3f mg "
-                "(tilt rows within +-30 deg: %.3f mg)\n",
-                fw.rows, fw.max_lsb, fw.max_err_mg, fw.max_tilt_err_mg);
+    std::printf(
+        "firmware check (fixed point, firmware/signal/cal, on the quantised record): %zu acc rows, "
+        "max |firmware - double model| = %.2f LSB Q16; max |corrected - true| = %.3f mg "
+        "(tilt rows within +-30 deg: %.3f mg)\n",
+        fw.rows, fw.max_lsb, fw.max_err_mg, fw.max_tilt_err_mg);
     if (!out.empty()) {
         std::vector<uint8_t> img;
         e = encode_record(rec, static_cast<uint32_t>(seq), img);
@@ -177,8 +185,8 @@ int cmd_fit(int argc, char **argv)
             std::fprintf(stderr, "calstation: cannot write '%s'\n", out.c_str());
             return 1;
         }
-        std::printf("wrote %s: calibration record format %u, %zu bytes, seq %u, CRC-32 0x%08X\n", out.c_str(),
-                    CALREC_VERSION, img.size(), static_cast<unsigned>(seq),
+        std::printf("wrote %s: calibration record format %u, %zu bytes, seq %u, CRC-32 0x%08X\n",
+                    out.c_str(), CALREC_VERSION, img.size(), static_cast<unsigned>(seq),
                     calrec_get_le32(&img[CALREC_OFF_CRC]));
     }
     return 0;
@@ -194,7 +202,8 @@ int cmd_show(int argc, char **argv)
     }
     std::vector<uint8_t> img((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
     if (img.size() < CALREC_OFF_BINDING + 24u) {
-        std::fprintf(stderr, "calstation: %s: %zu bytes, not a calibration record\n", argv[0], img.size());
+        std::fprintf(stderr, "calstation: %s: %zu bytes, not a calibration record\n", argv[0],
+                     img.size());
         return 1;
     }
     // Decode against the binding the image itself carries: this shows what is inside; the
@@ -210,30 +219,37 @@ int cmd_show(int argc, char **argv)
     uint32_t seq = 0;
     const int e = calrec_decode(img.data(), img.size(), &b, &r, &seq);
     if (e != INC_OK) {
-        std::fprintf(stderr, "calstation: %s: calrec_decode refused the image (%s)\n", argv[0], inc_err_name(e));
+        std::fprintf(stderr, "calstation: %s: calrec_decode refused the image (%s)\n", argv[0],
+                     inc_err_name(e));
         return 1;
     }
     const CalResult c = from_calrec(r);
     static const char *const ax[3] = {"x", "y", "z"};
-    std::printf("record: format %u, seq %u, binding family %u product %u revision %u serial %u lot %u/%u\n",
-                calrec_get_le32(&img[CALREC_OFF_VERSION]), seq, b.family, b.product, b.revision, b.serial,
-                b.lot_id1, b.lot_id2);
+    std::printf(
+        "record: format %u, seq %u, binding family %u product %u revision %u serial %u lot %u/%u\n",
+        calrec_get_le32(&img[CALREC_OFF_VERSION]), seq, b.family, b.product, b.revision, b.serial,
+        b.lot_id1, b.lot_id2);
     for (int a = 0; a < 3; a++) {
-        std::printf("acc %s: offset %+.6f g  gain %.7f  M row % .7f % .7f % .7f  nonlin c0..c3 % .6f % .6f % .6f % .6f\n",
-                    ax[a], c.acc_offset[a], c.acc_gain[a], c.acc_misalign[a][0], c.acc_misalign[a][1],
-                    c.acc_misalign[a][2], c.acc_nonlin[a][0], c.acc_nonlin[a][1], c.acc_nonlin[a][2], c.acc_nonlin[a][3]);
+        std::printf(
+            "acc %s: offset %+.6f g  gain %.7f  M row % .7f % .7f % .7f  nonlin c0..c3 % .6f % .6f % .6f % .6f\n",
+            ax[a], c.acc_offset[a], c.acc_gain[a], c.acc_misalign[a][0], c.acc_misalign[a][1],
+            c.acc_misalign[a][2], c.acc_nonlin[a][0], c.acc_nonlin[a][1], c.acc_nonlin[a][2],
+            c.acc_nonlin[a][3]);
         for (int q = 0; q < 2; q++) {
             const TModel &m = q ? c.acc_tscale[a] : c.acc_tbias[a];
             std::printf("      %s: %s", q ? "tscale" : "tbias ", tkind_name(m.kind));
-            if (m.kind != TKind::None && m.kind != TKind::Lorentz) std::printf(" t_ref %.3f t_span %.3f", m.t_ref, m.t_span);
+            if (m.kind != TKind::None && m.kind != TKind::Lorentz)
+                std::printf(" t_ref %.3f t_span %.3f", m.t_ref, m.t_span);
             if (m.kind == TKind::Pwl) std::printf(" n %d", m.n);
             std::printf(" p");
-            for (int k = 0; k < m.params(); k++) std::printf(" %.7g", m.p[k]);
+            for (int k = 0; k < m.params(); k++)
+                std::printf(" %.7g", m.p[k]);
             std::printf("\n");
         }
     }
-    std::printf("gyro: offset %+.5f %+.5f %+.5f deg/s, scale %.7f %.7f %.7f\n", c.gyro_offset[0], c.gyro_offset[1],
-                c.gyro_offset[2], c.gyro_scale[0], c.gyro_scale[1], c.gyro_scale[2]);
+    std::printf("gyro: offset %+.5f %+.5f %+.5f deg/s, scale %.7f %.7f %.7f\n", c.gyro_offset[0],
+                c.gyro_offset[1], c.gyro_offset[2], c.gyro_scale[0], c.gyro_scale[1],
+                c.gyro_scale[2]);
     return 0;
 }
 
@@ -253,7 +269,8 @@ int cmd_compare(int argc, char **argv)
             size_t pos = 0;
             while (pos <= s.size()) {
                 const size_t c = s.find(',', pos);
-                const std::string tok = s.substr(pos, c == std::string::npos ? std::string::npos : c - pos);
+                const std::string tok = s.substr(pos, c == std::string::npos ? std::string::npos
+                                                                             : c - pos);
                 if (!parse_u64(tok.c_str(), v)) return usage();
                 seeds.push_back(v);
                 if (c == std::string::npos) break;
@@ -265,7 +282,9 @@ int cmd_compare(int argc, char **argv)
     }
     std::vector<CompareAxis> rows;
     std::vector<SimPart> parts(seeds.size() + 1, SimPart{true, 0});
-    std::transform(seeds.begin(), seeds.end(), parts.begin() + 1, [](uint64_t s) { return SimPart{false, s}; });
+    std::transform(seeds.begin(), seeds.end(), parts.begin() + 1, [](uint64_t s) {
+        return SimPart{false, s};
+    });
     for (const auto &p : parts) {
         const std::string e = compare_part(p, cfg, rows);
         if (!e.empty()) {

@@ -14,9 +14,11 @@ extern "C" {
 #include <algorithm>
 #include <cmath>
 
-namespace epb {
+namespace epb
+{
 
-namespace {
+namespace
+{
 
 constexpr double kQ16 = 65536.0, kQ30 = 1073741824.0;
 constexpr double kPi = 3.14159265358979323846;
@@ -50,7 +52,8 @@ Eigen::Vector4d cubic_row(double v)
 }
 
 // Fit c0..c3 per element (station.hpp) into c.acc_nonlin; records the points for the budget.
-std::string fit_nonlinearity(const Soak &amb, const Eigen::Matrix3d &P, calstation::CalResult &c, StationOut &out)
+std::string fit_nonlinearity(const Soak &amb, const Eigen::Matrix3d &P, calstation::CalResult &c,
+                             StationOut &out)
 {
     for (int i = 0; i < 3; i++) {
         std::vector<double> vs, ts;
@@ -63,7 +66,8 @@ std::string fit_nonlinearity(const Soak &amb, const Eigen::Matrix3d &P, calstati
             epb_rig_face_dir(f, dir);
             add(amb.faces[f], dir);
         }
-        for (const SweepPoint &s : amb.sweep) add(s.meas, s.dir.data());
+        for (const SweepPoint &s : amb.sweep)
+            add(s.meas, s.dir.data());
         const int n = static_cast<int>(vs.size());
         Eigen::MatrixXd X(n, 4);
         Eigen::VectorXd y(n);
@@ -73,9 +77,12 @@ std::string fit_nonlinearity(const Soak &amb, const Eigen::Matrix3d &P, calstati
         }
         // Conditioned only when the element saw enough distinct levels: the faces give -1, 0, +1.
         Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(X);
-        if (qr.rank() < 4) return "nonlinearity fit of element " + std::to_string(i) + ": too few distinct positions";
+        if (qr.rank() < 4)
+            return "nonlinearity fit of element " + std::to_string(i) +
+                   ": too few distinct positions";
         const Eigen::Vector4d cf = qr.solve(y);
-        for (int k = 0; k < 4; k++) c.acc_nonlin[i][k] = cf(k);
+        for (int k = 0; k < 4; k++)
+            c.acc_nonlin[i][k] = cf(k);
         out.nl_v[i] = vs;
         out.nl_rms[i] = std::sqrt((X * cf - y).squaredNorm() / n);
     }
@@ -86,7 +93,8 @@ std::string fit_nonlinearity(const Soak &amb, const Eigen::Matrix3d &P, calstati
 
 } // namespace
 
-std::string station_record(const std::vector<Soak> &soaks, const calrec_binding &id, StationOut &out)
+std::string station_record(const std::vector<Soak> &soaks, const calrec_binding &id,
+                           StationOut &out)
 {
     if (soaks.empty()) return "no soak";
     const Soak &amb = soaks[0];
@@ -97,7 +105,8 @@ std::string station_record(const std::vector<Soak> &soaks, const calrec_binding 
     Eigen::Matrix3d P;
     for (int i = 0; i < 3; i++) {
         for (int j = 0; j < 3; j++) {
-            P(i, j) = 0.5 * (element_v(amb, amb.faces[2 * j], i) - element_v(amb, amb.faces[2 * j + 1], i));
+            P(i, j) = 0.5 * (element_v(amb, amb.faces[2 * j], i) -
+                             element_v(amb, amb.faces[2 * j + 1], i));
         }
     }
     const Eigen::Matrix3d M = P.inverse();
@@ -163,7 +172,8 @@ Budget derive_budget(const sim_calpart_params &type, const StationOut &st, doubl
     fx_q16_t kq = FX_Q16_INT(6);
     (void)slope_sigma_factor(runs, exceed, &kq);
     const double k = kq / kQ16;
-    const double sigma = std::sqrt(type.acc_noise_g * type.acc_noise_g + acc_lsb_g * acc_lsb_g / 12.0);
+    const double sigma = std::sqrt(type.acc_noise_g * type.acc_noise_g +
+                                   acc_lsb_g * acc_lsb_g / 12.0);
     out.sigma_sample_g = sigma;
     const calstation::CalResult rec = calstation::from_calrec(st.rec);
     const double n = static_cast<double>(n_face);
@@ -199,13 +209,15 @@ Budget derive_budget(const sim_calpart_params &type, const StationOut &st, doubl
             const int32_t *cq = st.rec.acc_nonlin[a];
             const std::vector<double> &vs = st.nl_v[a];
             Eigen::MatrixXd X(static_cast<Eigen::Index>(vs.size()), 4);
-            for (size_t r = 0; r < vs.size(); r++) X.row(static_cast<Eigen::Index>(r)) = cubic_row(vs[r]).transpose();
+            for (size_t r = 0; r < vs.size(); r++)
+                X.row(static_cast<Eigen::Index>(r)) = cubic_row(vs[r]).transpose();
             const Eigen::Matrix4d cov = (X.transpose() * X).inverse();
             for (int i = 0; i <= 1000; i++) {
                 const double x = -xmax + 2.0 * xmax * i / 1000.0;
                 const double nl2 = type.acc_nl2[a], nl3 = type.acc_nl3[a];
                 const double v = (x + nl2 * x * x + nl3 * x * x * x - nl2) / (1.0 + nl3);
-                const double y = v + cq[0] / kQ30 + v * (cq[1] / kQ30 + v * (cq[2] / kQ30 + v * (cq[3] / kQ30)));
+                const double y = v + cq[0] / kQ30 +
+                                 v * (cq[1] / kQ30 + v * (cq[2] / kQ30 + v * (cq[3] / kQ30)));
                 resid = std::max(resid, std::fabs(y - x));
                 fitsd = std::max(fitsd, std::sqrt(cubic_row(v).dot(cov * cubic_row(v))));
             }
@@ -247,7 +259,8 @@ Budget derive_budget(const sim_calpart_params &type, const StationOut &st, doubl
     const double arith = 4.0 / kQ16; // cal_acc_apply: <= 3.5 LSB Q16 (cal.h)
     const double offset = k * sigma / std::sqrt(n) + arith;
     const double sens = k * sigma / std::sqrt(2.0 * n) + (st.tcal ? sres : 0.0);
-    const double nonlin = st.nonlin ? out.resid_nonlin_g + out.fit_nonlin_g : std::max(kSeedNonlin, nl);
+    const double nonlin = st.nonlin ? out.resid_nonlin_g + out.fit_nonlin_g
+                                    : std::max(kSeedNonlin, nl);
     const double tcomp = st.tcal ? tres : kSeedTempUncomp;
 
     app_budget &b = out.b;
@@ -268,25 +281,35 @@ Budget derive_budget(const sim_calpart_params &type, const StationOut &st, doubl
     std::snprintf(buf, sizeof buf, "flip gain from %u-sample faces, k sigma/sqrt(2N)%s", n_face,
                   st.tcal ? " + three-point scale residual" : "");
     out.terms.back().origin = buf;
-    std::snprintf(buf, sizeof buf, "flip offset and cross-axis from %u-sample faces, k sigma/sqrt(N), + 4 LSB arithmetic", n_face);
+    std::snprintf(
+        buf, sizeof buf,
+        "flip offset and cross-axis from %u-sample faces, k sigma/sqrt(N), + 4 LSB arithmetic",
+        n_face);
     out.terms.push_back({"offset", offset, buf});
     if (st.nonlin) {
-        std::snprintf(buf, sizeof buf, "cubic from faces + %zu-point tilt sweep: part type residual %.3f mg + k sigma_fit %.3f mg "
-                      "within +-%.0f deg (uncorrected %.2f mg)", st.nl_v[0].size() - CAL_FACES, out.resid_nonlin_g * 1e3,
-                      out.fit_nonlin_g * 1e3, max_slope_deg, nl * 1e3);
+        std::snprintf(
+            buf, sizeof buf,
+            "cubic from faces + %zu-point tilt sweep: part type residual %.3f mg + k sigma_fit %.3f mg "
+            "within +-%.0f deg (uncorrected %.2f mg)",
+            st.nl_v[0].size() - CAL_FACES, out.resid_nonlin_g * 1e3, out.fit_nonlin_g * 1e3,
+            max_slope_deg, nl * 1e3);
     } else {
-        std::snprintf(buf, sizeof buf, "not corrected: max(seed 000 10 mg, part type %.2f mg within +-%.0f deg)",
+        std::snprintf(buf, sizeof buf,
+                      "not corrected: max(seed 000 10 mg, part type %.2f mg within +-%.0f deg)",
                       nl * 1e3, max_slope_deg);
     }
     out.terms.push_back({"nonlinearity", nonlin, buf});
     if (st.tcal) {
-        std::snprintf(buf, sizeof buf, "three-point models vs the part type over %.1f..%.1f degC (+-%.1f margin), "
-                      "both hysteresis branches", st.t_cold, st.t_hot, margin);
+        std::snprintf(buf, sizeof buf,
+                      "three-point models vs the part type over %.1f..%.1f degC (+-%.1f margin), "
+                      "both hysteresis branches",
+                      st.t_cold, st.t_hot, margin);
     } else {
         std::snprintf(buf, sizeof buf, "no temperature model: seed 000's 50 mg");
     }
     out.terms.push_back({"temperature", tcomp, buf});
-    std::snprintf(buf, sizeof buf, "rated per sample: sqrt(%.2f mg element^2 + LSB^2/12), k = %.2f", type.acc_noise_g * 1e3, k);
+    std::snprintf(buf, sizeof buf, "rated per sample: sqrt(%.2f mg element^2 + LSB^2/12), k = %.2f",
+                  type.acc_noise_g * 1e3, k);
     out.terms.push_back({"noise sigma", sigma, buf});
     return out;
 }

@@ -21,7 +21,8 @@ extern "C" {
 #include <string>
 #include <vector>
 
-namespace epb {
+namespace epb
+{
 
 // One position of the tilt sweep: the specific force the station applied (g, part frame) and
 // the firmware's average there.
@@ -32,23 +33,23 @@ struct SweepPoint {
 
 // The six faces of one soak as the firmware measured them, and its on-device result.
 struct Soak {
-    double chamber_c = 25.0;              // chamber temperature (the truth)
-    double temp_c = 25.0;                 // the part's own reading, mean over the faces (what
-                                          // the firmware will compare with); the chamber value
-                                          // for a part without temperature output
+    double chamber_c = 25.0; // chamber temperature (the truth)
+    double temp_c = 25.0;    // the part's own reading, mean over the faces (what
+                             // the firmware will compare with); the chamber value
+                             // for a part without temperature output
     std::array<app_face, CAL_FACES> faces{};
-    calrec six{};                         // acc_offset, acc_gain, gyro_offset from app_eol_six_position
-    std::vector<SweepPoint> sweep;        // the tilt sweep (ambient soak only; may be empty)
+    calrec six{};                  // acc_offset, acc_gain, gyro_offset from app_eol_six_position
+    std::vector<SweepPoint> sweep; // the tilt sweep (ambient soak only; may be empty)
 };
 
 struct StationOut {
-    calrec rec{};                          // the record to store (binding set by the firmware)
+    calrec rec{}; // the record to store (binding set by the firmware)
     std::array<std::array<double, 3>, 3> misalign{};
     bool tcal = false;
     double t_cold = 0.0, t_amb = 25.0, t_hot = 0.0;
-    bool nonlin = false;                   // the nonlinearity was fitted (a tilt sweep was given)
+    bool nonlin = false;                     // the nonlinearity was fitted (a tilt sweep was given)
     std::array<std::vector<double>, 3> nl_v; // per element: the v values of the fit's points
-    std::array<double, 3> nl_rms{};        // per element: rms residual of the fit, g
+    std::array<double, 3> nl_rms{};          // per element: rms residual of the fit, g
 };
 
 // Build the record from the soaks (soaks[0] = ambient; with three soaks the temperature models
@@ -60,12 +61,13 @@ struct StationOut {
 // c0 + c1 v + c2 v^2 + c3 v^3 = t - v over the six faces and the sweep; the firmware then applies
 // y = v + c(v) per element before M (cal_acc_apply). c0 also removes the flip's offset error
 // (the even nonlinearity at +-1 g).
-std::string station_record(const std::vector<Soak> &soaks, const calrec_binding &id, StationOut &out);
+std::string station_record(const std::vector<Soak> &soaks, const calrec_binding &id,
+                           StationOut &out);
 
 // One term of the budget with its origin, for the report.
 struct Term {
     std::string name;
-    double value = 0.0;      // g, or relative for the sensitivity terms
+    double value = 0.0; // g, or relative for the sensitivity terms
     std::string origin;
 };
 

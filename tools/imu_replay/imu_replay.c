@@ -38,10 +38,10 @@
 struct part {
     const char *name;
     bool adis;
-    uint32_t acc_lsb_ug;       /* ADIS: the variant's LSB; SCA3000: sca3000_ug_per_lsb */
-    int variant;               /* enum adis_imu_variant / enum sca3000_variant */
-    int family_1640x;          /* ADIS: 1 = 1640x (TEMP_OUT 0.14), 0 = 1636x (0.136) */
-    bool temp;                 /* the part has a temperature output */
+    uint32_t acc_lsb_ug; /* ADIS: the variant's LSB; SCA3000: sca3000_ug_per_lsb */
+    int variant;         /* enum adis_imu_variant / enum sca3000_variant */
+    int family_1640x;    /* ADIS: 1 = 1640x (TEMP_OUT 0.14), 0 = 1636x (0.136) */
+    bool temp;           /* the part has a temperature output */
 };
 
 static const struct part parts[] = {
@@ -74,7 +74,8 @@ static int32_t quant(double value, double lsb, int32_t lo, int32_t hi, bool *sat
 }
 
 /* One row as the part would deliver it (nominal-scaled Q16, app_sensor.h). */
-static void quantise_row(const struct part *p, const double *v, bool have_temp, struct app_sample *s)
+static void quantise_row(const struct part *p, const double *v, bool have_temp,
+                         struct app_sample *s)
 {
     bool asat = false, gsat = false, tsat = false;
     unsigned i;
@@ -100,7 +101,8 @@ static void quantise_row(const struct part *p, const double *v, bool have_temp, 
         if (p->adis) {
             const double lsb = p->family_1640x ? 0.14 : 0.136;
             const int32_t c = quant(v[7] - 25.0, lsb, -2048, 2047, &tsat);
-            s->temp_c = adis_imu_temp_c_q16(c, p->family_1640x ? ADIS_IMU_FAMILY_1640X : ADIS_IMU_FAMILY_1636X);
+            s->temp_c = adis_imu_temp_c_q16(c, p->family_1640x ? ADIS_IMU_FAMILY_1640X
+                                                               : ADIS_IMU_FAMILY_1636X);
         } else {
             /* counts = T * 1.8 + 214.6 (sca3000.h, the Linux formula) */
             const int32_t raw = quant(v[7] * 1.8 + 214.6, 1.0, 0, 511, &tsat);
@@ -174,20 +176,21 @@ struct opts {
 
 static void usage(void)
 {
-    fprintf(stderr,
-            "usage: imu_replay [options] IN.csv\n"
-            "  --part NAME        adis16405 (default), adis16400, adis16364, adis16362, adis16360,\n"
-            "                     sca3000-d01, sca3000-e02, sca3000-e04, sca3000-e05\n"
-            "  -o, --out FILE     estimates CSV (default: standard output)\n"
-            "  --blocks           one row per slope estimate instead of one per sample\n"
-            "  --record FILE      calibration record image (656 bytes, e.g. epb_demo --record-out)\n"
-            "  --calibrated       the data is already calibrated (an identity record is used)\n"
-            "  --block-s S        averaging block, s (default 2.5; rounded to stillness windows)\n"
-            "  --rate SPS         nominal sample rate (default: from the median time step)\n"
-            "  --gap-factor F     a step longer than F nominal periods is a gap (default 1.5)\n"
-            "  --revid N          SCA3000 REVID for the record binding (default 0x52)\n"
-            "  budget (default seed 000's Table 1, app_cfg_default):\n"
-            "  --nonlin-mg X --temp-comp-mg X --temp-uncomp-mg X --offset-mg X --sens-ppm X --noise-mg X\n");
+    fprintf(
+        stderr,
+        "usage: imu_replay [options] IN.csv\n"
+        "  --part NAME        adis16405 (default), adis16400, adis16364, adis16362, adis16360,\n"
+        "                     sca3000-d01, sca3000-e02, sca3000-e04, sca3000-e05\n"
+        "  -o, --out FILE     estimates CSV (default: standard output)\n"
+        "  --blocks           one row per slope estimate instead of one per sample\n"
+        "  --record FILE      calibration record image (656 bytes, e.g. epb_demo --record-out)\n"
+        "  --calibrated       the data is already calibrated (an identity record is used)\n"
+        "  --block-s S        averaging block, s (default 2.5; rounded to stillness windows)\n"
+        "  --rate SPS         nominal sample rate (default: from the median time step)\n"
+        "  --gap-factor F     a step longer than F nominal periods is a gap (default 1.5)\n"
+        "  --revid N          SCA3000 REVID for the record binding (default 0x52)\n"
+        "  budget (default seed 000's Table 1, app_cfg_default):\n"
+        "  --nonlin-mg X --temp-comp-mg X --temp-uncomp-mg X --offset-mg X --sens-ppm X --noise-mg X\n");
 }
 
 static bool opt_num(const char *s, double lo, double hi, double *out)
@@ -206,7 +209,8 @@ static int parse_opts(int argc, char **argv, struct opts *o)
     o->block_s = 2.5;
     o->gap_factor = 1.5;
     o->revid = SCA3000_REVID_DEFAULT;
-    o->nonlin_mg = o->temp_comp_mg = o->temp_uncomp_mg = o->offset_mg = o->sens_ppm = o->noise_mg = -1.0;
+    o->nonlin_mg = o->temp_comp_mg = o->temp_uncomp_mg = o->offset_mg = o->sens_ppm = o->noise_mg =
+        -1.0;
     for (a = 1; a < argc; a++) {
         const char *v = a + 1 < argc ? argv[a + 1] : NULL;
         const char *s = argv[a];
@@ -332,7 +336,8 @@ int main(int argc, char **argv)
         free(t.rows);
         return 2;
     }
-    for (i = 1; i < t.n; i++) dts[i - 1] = t.rows[i].v[0] - t.rows[i - 1].v[0];
+    for (i = 1; i < t.n; i++)
+        dts[i - 1] = t.rows[i].v[0] - t.rows[i - 1].v[0];
     qsort(dts, t.n - 1u, sizeof(*dts), cmp_double);
     nominal = o.rate_sps > 0.0 ? 1.0 / o.rate_sps : dts[(t.n - 1u) / 2u];
     free(dts);
@@ -365,8 +370,8 @@ int main(int argc, char **argv)
     }
     if (o.record != NULL || o.calibrated) {
         static const struct simflash_geometry geo = {PAGE, 2u, PROG};
-        static const struct calstore_config sc = {&simflash_calstore_ops, &flash, PAGE, PROG, CALSTORE_ERASED,
-                                                  {0u, PAGE}, PAGE};
+        static const struct calstore_config sc = {&simflash_calstore_ops, &flash,     PAGE, PROG,
+                                                  CALSTORE_ERASED,        {0u, PAGE}, PAGE};
         struct calrec rec;
         if (simflash_init(&flash, flash_mem, sizeof flash_mem, &geo) != INC_OK ||
             calstore_init(&store, &sc) != INC_OK) {
@@ -380,7 +385,8 @@ int main(int argc, char **argv)
             size_t len = f != NULL ? fread(img, 1, sizeof img, f) : 0u;
             if (f != NULL) fclose(f);
             if (len != CALREC_IMAGE_SIZE) {
-                fprintf(stderr, "imu_replay: %s: not a %u-byte calibration record image\n", o.record, CALREC_IMAGE_SIZE);
+                fprintf(stderr, "imu_replay: %s: not a %u-byte calibration record image\n",
+                        o.record, CALREC_IMAGE_SIZE);
                 free(t.rows);
                 return 2;
             }
@@ -397,7 +403,8 @@ int main(int argc, char **argv)
             rid.id.lot_id2 = b.lot_id2;
             err = calrec_decode(img, len, &b, &rec, NULL);
             if (err != INC_OK) {
-                fprintf(stderr, "imu_replay: %s: the record is refused (%s)\n", o.record, inc_err_name(err));
+                fprintf(stderr, "imu_replay: %s: the record is refused (%s)\n", o.record,
+                        inc_err_name(err));
                 free(t.rows);
                 return 2;
             }
@@ -423,11 +430,14 @@ int main(int argc, char **argv)
         free(t.rows);
         return 2;
     }
-    fprintf(stderr, "imu_replay: %zu rows, %s, nominal %.3f ms (%.1f SPS), blocks of %u samples, calibration: %s\n", t.n,
-            o.part->name, nominal * 1e3, 1.0 / nominal, cfg.avg_n,
-            app.cal_status == INC_OK ? (o.calibrated ? "data taken as calibrated" : "record loaded")
-                                     : (app.cal_status == INC_ERR_NOT_CALIBRATED ? "none (uncalibrated)"
-                                                                                 : inc_err_name(app.cal_status)));
+    fprintf(
+        stderr,
+        "imu_replay: %zu rows, %s, nominal %.3f ms (%.1f SPS), blocks of %u samples, calibration: %s\n",
+        t.n, o.part->name, nominal * 1e3, 1.0 / nominal, cfg.avg_n,
+        app.cal_status == INC_OK
+            ? (o.calibrated ? "data taken as calibrated" : "record loaded")
+            : (app.cal_status == INC_ERR_NOT_CALIBRATED ? "none (uncalibrated)"
+                                                        : inc_err_name(app.cal_status)));
 
     out = o.out != NULL ? fopen(o.out, "w") : stdout;
     if (out == NULL) {
@@ -435,9 +445,11 @@ int main(int argc, char **argv)
         free(t.rows);
         return 2;
     }
-    fprintf(out, "line,time_s,dt_s,gap,accel_x_g,accel_y_g,accel_z_g,gyro_x_dps,gyro_y_dps,gyro_z_dps,temp_c,"
-                 "roll_deg,pitch_deg,roll_sigma_deg,pitch_sigma_deg,tilt_flags,tilt_valid,"
-                 "block,slope_deg,grade_pct,bound_deg,bound_pct,slope_flags,app_flags,valid\n");
+    fprintf(
+        out,
+        "line,time_s,dt_s,gap,accel_x_g,accel_y_g,accel_z_g,gyro_x_dps,gyro_y_dps,gyro_z_dps,temp_c,"
+        "roll_deg,pitch_deg,roll_sigma_deg,pitch_sigma_deg,tilt_flags,tilt_valid,"
+        "block,slope_deg,grade_pct,bound_deg,bound_pct,slope_flags,app_flags,valid\n");
     period = nominal;
     for (i = 0; i < t.n; i++) {
         const struct imu_csv_row *r = &t.rows[i];
@@ -461,7 +473,8 @@ int main(int argc, char **argv)
         s.t_ns = (uint64_t)(r->v[0] * 1e9 + 0.5);
         err = app_step(&app, &s, INC_OK, &c, &done, &res);
         if (err != INC_OK) {
-            fprintf(stderr, "imu_replay: line %ld: app_step failed (%s)\n", r->line, inc_err_name(err));
+            fprintf(stderr, "imu_replay: line %ld: app_step failed (%s)\n", r->line,
+                    inc_err_name(err));
             break;
         }
         for (k = 0; k < 3u; k++) {
@@ -473,7 +486,8 @@ int main(int argc, char **argv)
         /* The real step of this row (a gap integrates over its whole length, or restarts). */
         err = tilt_step(&tilt, &ti, (uint32_t)fmin(fmax(dt * 1e9 + 0.5, 1.0), 4294967295.0), &to);
         if (err != INC_OK) {
-            fprintf(stderr, "imu_replay: line %ld: tilt_step failed (%s)\n", r->line, inc_err_name(err));
+            fprintf(stderr, "imu_replay: line %ld: tilt_step failed (%s)\n", r->line,
+                    inc_err_name(err));
             break;
         }
         if (done) {
@@ -482,14 +496,17 @@ int main(int argc, char **argv)
             blocks++;
         }
         if (o.blocks_only && !done) continue;
-        fprintf(out, "%ld,%.9f,%.9f,%u,%.7f,%.7f,%.7f,%.6f,%.6f,%.6f,%.5f,%.6f,%.6f,%.6f,%.6f,%u,%d,%u", r->line, r->v[0], dt,
-                gap, c.accel_g[0] / 65536.0, c.accel_g[1] / 65536.0, c.accel_g[2] / 65536.0, c.gyro_dps[0] / 65536.0,
-                c.gyro_dps[1] / 65536.0, c.gyro_dps[2] / 65536.0, c.temp_c / 65536.0, to.angle_deg[TILT_ROLL] / 65536.0,
+        fprintf(out,
+                "%ld,%.9f,%.9f,%u,%.7f,%.7f,%.7f,%.6f,%.6f,%.6f,%.5f,%.6f,%.6f,%.6f,%.6f,%u,%d,%u",
+                r->line, r->v[0], dt, gap, c.accel_g[0] / 65536.0, c.accel_g[1] / 65536.0,
+                c.accel_g[2] / 65536.0, c.gyro_dps[0] / 65536.0, c.gyro_dps[1] / 65536.0,
+                c.gyro_dps[2] / 65536.0, c.temp_c / 65536.0, to.angle_deg[TILT_ROLL] / 65536.0,
                 to.angle_deg[TILT_PITCH] / 65536.0, to.sigma_deg[TILT_ROLL] / 65536.0,
                 to.sigma_deg[TILT_PITCH] / 65536.0, to.flags, to.valid ? 1 : 0, blocks);
         if (have_est) {
-            fprintf(out, ",%.6f,%.6f,%.6f,%.6f,%u,%u,%d\n", last.slope.slope_deg / 65536.0, last.slope.grade_pct / 65536.0,
-                    last.slope.bound_deg / 65536.0, last.slope.bound_pct / 65536.0, last.slope.flags, last.flags,
+            fprintf(out, ",%.6f,%.6f,%.6f,%.6f,%u,%u,%d\n", last.slope.slope_deg / 65536.0,
+                    last.slope.grade_pct / 65536.0, last.slope.bound_deg / 65536.0,
+                    last.slope.bound_pct / 65536.0, last.slope.flags, last.flags,
                     last.valid ? 1 : 0);
         } else {
             fprintf(out, ",,,,,,,\n");
@@ -499,10 +516,12 @@ int main(int argc, char **argv)
         fprintf(stderr, "imu_replay: write error on %s\n", o.out);
         err = INC_ERR_IO;
     }
-    fprintf(stderr, "imu_replay: %u estimates, %u gaps (%u samples missed)", blocks, gaps, missed_total);
+    fprintf(stderr, "imu_replay: %u estimates, %u gaps (%u samples missed)", blocks, gaps,
+            missed_total);
     if (have_est) {
-        fprintf(stderr, "; last: slope %.4f deg (%.3f %%) +- %.4f deg, %s", last.slope.slope_deg / 65536.0,
-                last.slope.grade_pct / 65536.0, last.slope.bound_deg / 65536.0, last.valid ? "valid" : "NOT valid");
+        fprintf(stderr, "; last: slope %.4f deg (%.3f %%) +- %.4f deg, %s",
+                last.slope.slope_deg / 65536.0, last.slope.grade_pct / 65536.0,
+                last.slope.bound_deg / 65536.0, last.valid ? "valid" : "NOT valid");
     }
     fprintf(stderr, "\n");
     free(t.rows);

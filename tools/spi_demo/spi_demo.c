@@ -152,7 +152,8 @@ int main(int argc, char **argv)
     }
 
     printf("Inclino simulated SPI transfer: mode %lu, %lu-bit frames, SCLK %lu Hz (period %lu ns), "
-           "CS %s, stall %lu ns\n", mode, bits, hz, (unsigned long)dc.timing.sclk_period_ns,
+           "CS %s, stall %lu ns\n",
+           mode, bits, hz, (unsigned long)dc.timing.sclk_period_ns,
            cs == SPI_CS_HOLD ? "held" : "toggled", stall);
     printf("frame  MOSI   MISO   (the part answers each word with the previous one)\n");
     for (i = 0; i < n; i++) {

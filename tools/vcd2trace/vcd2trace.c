@@ -23,17 +23,38 @@ int main(int argc, char **argv)
     int a, n;
     for (a = 1; a < argc; a++) {
         const char *v = a + 1 < argc ? argv[a + 1] : NULL;
-        if (strcmp(argv[a], "--sclk") == 0 && v) { o.sclk = v; a++; }
-        else if (strcmp(argv[a], "--mosi") == 0 && v) { o.mosi = v; a++; }
-        else if (strcmp(argv[a], "--miso") == 0 && v) { o.miso = v; a++; }
-        else if (strcmp(argv[a], "--cs") == 0 && v) { o.cs = v; a++; }
-        else if (strcmp(argv[a], "--mode") == 0 && v) { o.mode = (unsigned)atoi(v); a++; }
-        else if (strcmp(argv[a], "--bits") == 0 && v) { o.bits = (unsigned)atoi(v); a++; }
-        else if (strcmp(argv[a], "--cs-pin") == 0 && v) { o.cs_pin = (unsigned)atoi(v); a++; }
-        else if (argv[a][0] == '-') { in = NULL; break; }
-        else if (in == NULL) in = argv[a];
-        else if (outp == NULL) outp = argv[a];
-        else { in = NULL; break; }
+        if (strcmp(argv[a], "--sclk") == 0 && v) {
+            o.sclk = v;
+            a++;
+        } else if (strcmp(argv[a], "--mosi") == 0 && v) {
+            o.mosi = v;
+            a++;
+        } else if (strcmp(argv[a], "--miso") == 0 && v) {
+            o.miso = v;
+            a++;
+        } else if (strcmp(argv[a], "--cs") == 0 && v) {
+            o.cs = v;
+            a++;
+        } else if (strcmp(argv[a], "--mode") == 0 && v) {
+            o.mode = (unsigned)atoi(v);
+            a++;
+        } else if (strcmp(argv[a], "--bits") == 0 && v) {
+            o.bits = (unsigned)atoi(v);
+            a++;
+        } else if (strcmp(argv[a], "--cs-pin") == 0 && v) {
+            o.cs_pin = (unsigned)atoi(v);
+            a++;
+        } else if (argv[a][0] == '-') {
+            in = NULL;
+            break;
+        } else if (in == NULL)
+            in = argv[a];
+        else if (outp == NULL)
+            outp = argv[a];
+        else {
+            in = NULL;
+            break;
+        }
     }
     if (in == NULL || outp == NULL) {
         fprintf(stderr, "usage: vcd2trace [--sclk N] [--mosi N] [--miso N] [--cs N] [--mode 0..3] "
@@ -57,7 +78,8 @@ int main(int argc, char **argv)
         n = INC_ERR_IO;
     }
     if (n < 0) {
-        fprintf(stderr, "vcd2trace: %s (%s)\n", msg[0] ? msg : "conversion failed", inc_err_name(n));
+        fprintf(stderr, "vcd2trace: %s (%s)\n", msg[0] ? msg : "conversion failed",
+                inc_err_name(n));
         return 1;
     }
     printf("%d CS periods written to %s\n", n, outp);

@@ -189,7 +189,9 @@ int vprintf(const char *fmt, va_list ap)
         switch (*fmt) {
         case 'd':
         case 'i': {
-            long long v = lng >= 2 ? va_arg(ap, long long) : lng == 1 ? va_arg(ap, long) : va_arg(ap, int);
+            long long v = lng >= 2   ? va_arg(ap, long long)
+                          : lng == 1 ? va_arg(ap, long)
+                                     : va_arg(ap, int);
             unsigned long long m = v < 0 ? 0u - (unsigned long long)v : (unsigned long long)v;
             count += rv32_put_uint(m, 10u, 0, width, pad, left, v < 0);
             break;
@@ -197,9 +199,9 @@ int vprintf(const char *fmt, va_list ap)
         case 'u':
         case 'x':
         case 'X': {
-            unsigned long long v = lng >= 2 ? va_arg(ap, unsigned long long)
-                                 : lng == 1 ? va_arg(ap, unsigned long)
-                                            : va_arg(ap, unsigned);
+            unsigned long long v = lng >= 2   ? va_arg(ap, unsigned long long)
+                                   : lng == 1 ? va_arg(ap, unsigned long)
+                                              : va_arg(ap, unsigned);
             count += rv32_put_uint(v, *fmt == 'u' ? 10u : 16u, *fmt == 'X', width, pad, left, 0);
             break;
         }

@@ -73,7 +73,8 @@ int calstore_init(struct calstore *st, const struct calstore_config *cfg)
         return INC_ERR_NULL;
     }
     st->init_magic = 0;
-    if (c->ops == NULL || c->ops->read == NULL || c->ops->program == NULL || c->ops->erase == NULL) {
+    if (c->ops == NULL || c->ops->read == NULL || c->ops->program == NULL ||
+        c->ops->erase == NULL) {
         return INC_ERR_NULL;
     }
     if (c->erased_value != CALSTORE_ERASED) {
@@ -81,15 +82,17 @@ int calstore_init(struct calstore *st, const struct calstore_config *cfg)
     }
     min_size = calstore_slot_min_size(c->prog_size, c->page_size);
     if (min_size == 0u || c->slot_size < min_size || c->slot_size > CALSTORE_SLOT_MAX ||
-        c->slot_size % c->page_size != 0u ||
-        c->slot_addr[0] % c->page_size != 0u || c->slot_addr[1] % c->page_size != 0u) {
+        c->slot_size % c->page_size != 0u || c->slot_addr[0] % c->page_size != 0u ||
+        c->slot_addr[1] % c->page_size != 0u) {
         return INC_ERR_INVAL;
     }
     /* Each slot must fit the 32-bit address space, and the two must not share a page. */
-    if (c->slot_addr[0] > UINT32_MAX - c->slot_size || c->slot_addr[1] > UINT32_MAX - c->slot_size) {
+    if (c->slot_addr[0] > UINT32_MAX - c->slot_size ||
+        c->slot_addr[1] > UINT32_MAX - c->slot_size) {
         return INC_ERR_INVAL;
     }
-    if (c->slot_addr[0] < c->slot_addr[1] + c->slot_size && c->slot_addr[1] < c->slot_addr[0] + c->slot_size) {
+    if (c->slot_addr[0] < c->slot_addr[1] + c->slot_size &&
+        c->slot_addr[1] < c->slot_addr[0] + c->slot_size) {
         return INC_ERR_INVAL;
     }
     st->cfg = *cfg;
@@ -113,7 +116,8 @@ static void commit_fill(uint8_t *unit, uint32_t len)
 }
 
 /* 0 and *erased = whether bytes [off, off+len) of the slot are all erased. */
-static int region_erased(struct calstore *st, unsigned slot, uint32_t off, uint32_t len, bool *erased)
+static int region_erased(struct calstore *st, unsigned slot, uint32_t off, uint32_t len,
+                         bool *erased)
 {
     uint32_t done = 0, i;
 
@@ -255,7 +259,8 @@ static int newest(const struct calstore_slot_info s[2], bool use0, bool use1)
     return use1 ? 1 : -1;
 }
 
-static int judge_both(struct calstore *st, const struct calrec_binding *expect, struct calstore_info *info)
+static int judge_both(struct calstore *st, const struct calrec_binding *expect,
+                      struct calstore_info *info)
 {
     unsigned s;
 

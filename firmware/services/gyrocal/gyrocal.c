@@ -18,10 +18,10 @@
 
 #include "inclino/fx.h"
 
-#define MAX_AVG_SAMPLES (1u << 18)  /* N sum c^2 <= N^2 2^26 <= 2^62 */
-#define Q16_PER_OFF_LSB 819         /* 0.0125 deg/s in Q16.16 = 819.2 */
-#define Q16_PER_PROC_LSB 205        /* 1/320 deg/s in Q16.16 = 204.8 */
-#define ST_WINDOW 819u              /* 1 s at 819.2 SPS */
+#define MAX_AVG_SAMPLES (1u << 18) /* N sum c^2 <= N^2 2^26 <= 2^62 */
+#define Q16_PER_OFF_LSB 819        /* 0.0125 deg/s in Q16.16 = 819.2 */
+#define Q16_PER_PROC_LSB 205       /* 1/320 deg/s in Q16.16 = 204.8 */
+#define ST_WINDOW 819u             /* 1 s at 819.2 SPS */
 #define MAX_ADEV_Q16 (1L << 24)
 
 static const char *const reason_text[GYROCAL_REASONS] = {
@@ -44,9 +44,18 @@ const char *gyrocal_reason_text(enum gyrocal_reason r)
 static int range_scale(enum adis_imu_range range, uint32_t *lsb_udps, unsigned *k)
 {
     switch (range) {
-    case ADIS_IMU_RANGE_300: *lsb_udps = 50000u; *k = 4u; return INC_OK;
-    case ADIS_IMU_RANGE_150: *lsb_udps = 25000u; *k = 2u; return INC_OK;
-    case ADIS_IMU_RANGE_75: *lsb_udps = 12500u; *k = 1u; return INC_OK;
+    case ADIS_IMU_RANGE_300:
+        *lsb_udps = 50000u;
+        *k = 4u;
+        return INC_OK;
+    case ADIS_IMU_RANGE_150:
+        *lsb_udps = 25000u;
+        *k = 2u;
+        return INC_OK;
+    case ADIS_IMU_RANGE_75:
+        *lsb_udps = 12500u;
+        *k = 1u;
+        return INC_OK;
     default: return INC_ERR_INVAL;
     }
 }
@@ -79,12 +88,12 @@ int gyrocal_default_cfg(struct gyrocal_cfg *cfg, const struct adis_imu_variant_i
     /* [U] 5 deg/s: above any uncalibrated bias, so a still part is never refused for its bias. */
     cfg->still.gyro_mean_max = 5000000u / lsb_udps;
     cfg->still.accel_one_g = (int32_t)((1000000u + lsb_ug / 2u) / lsb_ug);
-    cfg->still.accel_norm_tol = 100000u / lsb_ug;            /* 100 mg */
+    cfg->still.accel_norm_tol = 100000u / lsb_ug;                /* 100 mg */
     cfg->still.accel_drift_max = (3000u + lsb_ug - 1u) / lsb_ug; /* 3 mg, at least 1 count */
-    cfg->thermal.avg_n = ST_WINDOW;                          /* 1 s points */
-    cfg->thermal.span = 30u;                                 /* 30 s window */
-    cfg->thermal.max_change = 1u;                            /* 1 TEMP_OUT LSB (0.136/0.14 C) */
-    cfg->settle_timeout_ms = 15u * 60u * 1000u;              /* seed 003: up to 10-15 min */
+    cfg->thermal.avg_n = ST_WINDOW;                              /* 1 s points */
+    cfg->thermal.span = 30u;                                     /* 30 s window */
+    cfg->thermal.max_change = 1u;                                /* 1 TEMP_OUT LSB (0.136/0.14 C) */
+    cfg->settle_timeout_ms = 15u * 60u * 1000u;                  /* seed 003: up to 10-15 min */
     cfg->manual_samples = GYROCAL_MANUAL_SAMPLES;
     cfg->manual_to_register = true;
     cfg->flash_update = true;
@@ -239,8 +248,8 @@ int32_t gyrocal_correct_q16(const struct gyrocal_correction *c, unsigned axis, i
 /* ---- statistics helpers ---------------------------------------------------------------------- */
 
 struct sums {
-    int64_t s[3];       /* sum of counts */
-    uint64_t s2[3];     /* sum of counts^2 */
+    int64_t s[3];   /* sum of counts */
+    uint64_t s2[3]; /* sum of counts^2 */
     uint32_t n;
 };
 
@@ -258,7 +267,7 @@ static void sums_add(struct sums *a, const struct adis_imu_sample *smp)
 {
     unsigned i;
     for (i = 0; i < 3u; i++) {
-        const int64_t c = smp->counts[ADIS_IMU_CH_GYRO_X + i];  /* 14-bit: |c| <= 8192 */
+        const int64_t c = smp->counts[ADIS_IMU_CH_GYRO_X + i]; /* 14-bit: |c| <= 8192 */
         a->s[i] += c;
         a->s2[i] += (uint64_t)(c * c);
     }
@@ -287,9 +296,9 @@ static int32_t se_q16(const struct sums *a, unsigned i, unsigned k, uint32_t tap
     if (n < 2u) {
         return 0;
     }
-    num = n * a->s2[i] - sa * sa;    /* n^2 x variance, <= n^2 2^26 <= 2^62 */
-    v16 = ((num / n) << 16) / n;     /* variance, counts^2 Q16 (num / n <= 2^44) */
-    v32 = (v16 << 16) / n;           /* variance of the mean, counts^2 Q32 (<= 2^58) */
+    num = n * a->s2[i] - sa * sa; /* n^2 x variance, <= n^2 2^26 <= 2^62 */
+    v16 = ((num / n) << 16) / n;  /* variance, counts^2 Q16 (num / n <= 2^44) */
+    v32 = (v16 << 16) / n;        /* variance of the mean, counts^2 Q32 (<= 2^58) */
     /* / g: gnum <= 3 * 2^18; multiply first while it cannot overflow, else divide first */
     v32 = v32 < ((uint64_t)1 << 43) ? v32 * gnum / gden : v32 / gden * gnum;
     return fx_div64((int64_t)fx_isqrt64(v32) * (int64_t)k, 80u); /* counts Q16 -> deg/s Q16 */
@@ -370,8 +379,9 @@ static int restore_settings(struct gyrocal *g, uint8_t prd, uint16_t avg)
 {
     int err = INC_OK;
     if ((g->imu->sens_avg & 0x07FFu) != (avg & 0x07FFu)) {
-        err = adis_imu_set_filter(g->imu, avg & ADIS_IMU_SENS_AVG_M_MASK,
-                                  (enum adis_imu_range)((avg >> ADIS_IMU_SENS_AVG_RANGE_SHIFT) & 7u));
+        err = adis_imu_set_filter(
+            g->imu, avg & ADIS_IMU_SENS_AVG_M_MASK,
+            (enum adis_imu_range)((avg >> ADIS_IMU_SENS_AVG_RANGE_SHIFT) & 7u));
     }
     if (err == INC_OK && (uint8_t)g->imu->smpl_prd != prd) {
         err = adis_imu_set_sample_period(g->imu, prd);
@@ -402,8 +412,8 @@ static int post_read(struct gyrocal *g, struct sums *v, uint32_t *missed)
 
 /* Verification of the corrected output: per axis |mean| <= sigmas x sqrt(se^2 + r^2); axes whose
  * register or correction saturated are reported but not judged. True when it passes. */
-static bool verify(const struct gyrocal *g, const struct sums *v, unsigned k,
-                   const int16_t corr[3], bool corr_valid, struct gyrocal_result *res)
+static bool verify(const struct gyrocal *g, const struct sums *v, unsigned k, const int16_t corr[3],
+                   bool corr_valid, struct gyrocal_result *res)
 {
     struct gyrocal_correction c;
     const uint32_t taps = 1u << (g->imu->sens_avg & ADIS_IMU_SENS_AVG_M_MASK);
@@ -566,7 +576,7 @@ static int run_manual_average(struct gyrocal *g, struct gyrocal_result *res, str
         }
         res->t_avg_end_ns = s.t_ns;
         if (still_window_count(&g->still) != w) {
-            *why = during(g, m0);  /* judged once per window: stop at the first motion */
+            *why = during(g, m0); /* judged once per window: stop at the first motion */
             if (*why != GYROCAL_DONE) {
                 break;
             }
@@ -673,7 +683,8 @@ int gyrocal_run(struct gyrocal *g, enum gyrocal_mode mode, struct gyrocal_result
         }
         if (err == INC_OK) {
             res->t_avg_start_ns = hal_now_ns(g->imu->cfg.hal);
-            res->t_avg_end_ns = res->t_avg_start_ns + (uint64_t)ADIS_IMU_PRECISION_AUTONULL_MS * 1000000u;
+            res->t_avg_end_ns = res->t_avg_start_ns +
+                                (uint64_t)ADIS_IMU_PRECISION_AUTONULL_MS * 1000000u;
             err = adis_imu_command(g->imu, ADIS_IMU_CMD_PRECISION_AUTONULL);
             still_restart_window(&g->still); /* samples before the 30 s gap: not one window */
         }
@@ -700,7 +711,7 @@ int gyrocal_run(struct gyrocal *g, enum gyrocal_mode mode, struct gyrocal_result
     /* New offsets / correction and the residual estimate. */
     if (mode == GYROCAL_MANUAL) {
         for (i = 0; i < 3u; i++) {
-            const int32_t d = -fx_div64(a.s[i] * (int64_t)k, a.n);          /* -80 x mean */
+            const int32_t d = -fx_div64(a.s[i] * (int64_t)k, a.n);            /* -80 x mean */
             const int32_t total = -fx_div64(a.s[i] * (int64_t)(4u * k), a.n); /* -320 x mean */
             int32_t fine = total;
             int32_t se;
@@ -733,7 +744,7 @@ int gyrocal_run(struct gyrocal *g, enum gyrocal_mode mode, struct gyrocal_result
             if (err != INC_OK) {
                 return fail_restore(g, res, err, prd, avg);
             }
-            still_restart_window(&g->still);   /* the output steps here */
+            still_restart_window(&g->still); /* the output steps here */
         }
         err = restore_settings(g, prd, avg);
     } else {

@@ -174,7 +174,7 @@ int avg_cascade_init(struct avg_cascade *c, int64_t *lines, uint32_t capacity, u
         return INC_ERR_INVAL;
     }
     for (k = 0; k < passes; k++) {
-        div *= w;                 /* <= 2^31 * 2^32 before the check: no uint64 wrap */
+        div *= w; /* <= 2^31 * 2^32 before the check: no uint64 wrap */
         if (div > AVG_MAX_DIVISOR) {
             return INC_ERR_OVERFLOW;
         }
@@ -221,7 +221,7 @@ static void cascade_prime(struct avg_cascade *c, int32_t x)
         for (i = 0; i < c->w; i++) {
             line[i] = v;
         }
-        v *= (int64_t)c->w;   /* |v| <= 2^31 * W^(k+1) <= 2^62 */
+        v *= (int64_t)c->w; /* |v| <= 2^31 * W^(k+1) <= 2^62 */
         c->sum[k] = v;
     }
     c->primed = true;
@@ -304,7 +304,7 @@ int avg_bartlett_push(struct avg_bartlett *b, int32_t x, int32_t *y, bool *ready
             b->s_line[i] = s;
         }
         b->s1 = s;
-        b->s2 = s * b->n;   /* |x| 2^12 <= 2^43 */
+        b->s2 = s * b->n; /* |x| 2^12 <= 2^43 */
         b->primed = true;
     }
     /* Stage 1: sum of the last N inputs. */

@@ -66,7 +66,8 @@ int cal_acc_set_temp(struct cal_acc *st, fx_q16_t t_c)
         }
         off[i] = fx_add(st->rec->acc_offset[i], b);
         k = fx_mul_q30(st->rec->acc_gain[i], fx_add(FX_Q30_ONE, s));
-        if (off[i] > CAL_BEFF_MAX || off[i] < -CAL_BEFF_MAX || k < CAL_KEFF_MIN || k > CAL_KEFF_MAX) {
+        if (off[i] > CAL_BEFF_MAX || off[i] < -CAL_BEFF_MAX || k < CAL_KEFF_MIN ||
+            k > CAL_KEFF_MAX) {
             acc_passthrough(st);
             return INC_ERR_RANGE;
         }

@@ -228,7 +228,8 @@ int cal_turn_add(struct cal_turn *t, const fx_q16_t rate[3])
         /* (rate - offset) in deg/s Q16 (|.| < 2^28) times dt in s Q30 (<= 2^30) is exact in
          * int64 (< 2^58); rounded to Q32 degrees it is < 2^44 per sample. */
         inc[i] = fx_rshift_round64(((int64_t)rate[i] - t->offset[i]) * t->dt, 14u);
-        if (t->angle_q32[i] + inc[i] > TURN_ANGLE_MAX || t->angle_q32[i] + inc[i] < -TURN_ANGLE_MAX) {
+        if (t->angle_q32[i] + inc[i] > TURN_ANGLE_MAX ||
+            t->angle_q32[i] + inc[i] < -TURN_ANGLE_MAX) {
             return INC_ERR_OVERFLOW;
         }
     }

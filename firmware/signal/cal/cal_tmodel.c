@@ -55,8 +55,8 @@ static fx_q30_t lorentz_q30(fx_q16_t t, int32_t w, int32_t tc)
     while ((den >> s) >= 0x7FFFFFFFu) {
         s++;
     }
-    (void)fx_div((int32_t)fx_rshift_round64((int64_t)w2, s), (int32_t)fx_rshift_round64((int64_t)den, s),
-                 FX_Q30_SHIFT, &l);
+    (void)fx_div((int32_t)fx_rshift_round64((int64_t)w2, s),
+                 (int32_t)fx_rshift_round64((int64_t)den, s), FX_Q30_SHIFT, &l);
     return l;
 }
 
@@ -89,8 +89,7 @@ int cal_tmodel_eval(const struct calrec_tmodel *m, fx_q16_t t_c, int32_t *y)
     *y = 0;
     t = fx_clamp(t_c, CAL_T_MIN, CAL_T_MAX);
     switch (m->kind) {
-    case CALREC_TM_NONE:
-        return INC_OK;
+    case CALREC_TM_NONE: return INC_OK;
     case CALREC_TM_LINEAR:
         if (!poly_fields_ok(m)) {
             return INC_ERR_INVAL;
@@ -125,7 +124,8 @@ int cal_tmodel_eval(const struct calrec_tmodel *m, fx_q16_t t_c, int32_t *y)
     case CALREC_TM_PWL: {
         int32_t last, off, i, frac;
         fx_q30_t f;
-        if (!in_range(m->n, 2, CALREC_TM_PARAMS) || !in_range(m->t_ref, CALREC_LIM_T_MIN, CALREC_LIM_T_MAX) ||
+        if (!in_range(m->n, 2, CALREC_TM_PARAMS) ||
+            !in_range(m->t_ref, CALREC_LIM_T_MIN, CALREC_LIM_T_MAX) ||
             !in_range(m->t_span, CALREC_LIM_SPAN_MIN, CALREC_LIM_SPAN_MAX)) {
             return INC_ERR_INVAL;
         }
@@ -142,7 +142,6 @@ int cal_tmodel_eval(const struct calrec_tmodel *m, fx_q16_t t_c, int32_t *y)
         *y = mac_q30(m->p[i], fx_sub(m->p[i + 1], m->p[i]), f);
         return INC_OK;
     }
-    default:
-        return INC_ERR_INVAL;
+    default: return INC_ERR_INVAL;
     }
 }

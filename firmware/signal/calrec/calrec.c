@@ -22,11 +22,16 @@ _Static_assert(CALREC_OFF_BINDING == CALREC_HEADER_SIZE, "binding follows the he
 _Static_assert(CALREC_OFF_ACC_OFFSET == CALREC_OFF_BINDING + 6u * 4u, "layout");
 _Static_assert(CALREC_OFF_ACC_GAIN == CALREC_OFF_ACC_OFFSET + CALREC_AXES * 4u, "layout");
 _Static_assert(CALREC_OFF_ACC_MISALIGN == CALREC_OFF_ACC_GAIN + CALREC_AXES * 4u, "layout");
-_Static_assert(CALREC_OFF_ACC_NONLIN == CALREC_OFF_ACC_MISALIGN + CALREC_AXES * CALREC_AXES * 4u, "layout");
-_Static_assert(CALREC_OFF_ACC_TBIAS == CALREC_OFF_ACC_NONLIN + CALREC_AXES * CALREC_NONLIN_TERMS * 4u, "layout");
+_Static_assert(CALREC_OFF_ACC_NONLIN == CALREC_OFF_ACC_MISALIGN + CALREC_AXES * CALREC_AXES * 4u,
+               "layout");
+_Static_assert(CALREC_OFF_ACC_TBIAS ==
+                   CALREC_OFF_ACC_NONLIN + CALREC_AXES * CALREC_NONLIN_TERMS * 4u,
+               "layout");
 _Static_assert(CALREC_TMODEL_SIZE == (4u + CALREC_TM_PARAMS) * 4u, "layout");
-_Static_assert(CALREC_OFF_ACC_TSCALE == CALREC_OFF_ACC_TBIAS + CALREC_AXES * CALREC_TMODEL_SIZE, "layout");
-_Static_assert(CALREC_OFF_GYRO_OFFSET == CALREC_OFF_ACC_TSCALE + CALREC_AXES * CALREC_TMODEL_SIZE, "layout");
+_Static_assert(CALREC_OFF_ACC_TSCALE == CALREC_OFF_ACC_TBIAS + CALREC_AXES * CALREC_TMODEL_SIZE,
+               "layout");
+_Static_assert(CALREC_OFF_GYRO_OFFSET == CALREC_OFF_ACC_TSCALE + CALREC_AXES * CALREC_TMODEL_SIZE,
+               "layout");
 _Static_assert(CALREC_OFF_GYRO_SCALE == CALREC_OFF_GYRO_OFFSET + CALREC_AXES * 4u, "layout");
 _Static_assert(CALREC_OFF_CRC == CALREC_OFF_GYRO_SCALE + CALREC_AXES * 4u, "layout");
 _Static_assert(CALREC_IMAGE_SIZE == CALREC_OFF_CRC + 4u, "layout");
@@ -118,8 +123,7 @@ int calrec_check_binding(const struct calrec_binding *b)
             return INC_ERR_INVAL;
         }
         return INC_OK;
-    default:
-        return INC_ERR_INVAL;
+    default: return INC_ERR_INVAL;
     }
 }
 
@@ -160,8 +164,7 @@ static bool tmodel_ok(const struct calrec_tmodel *m, int32_t ylim)
     int32_t last;
 
     switch (m->kind) {
-    case CALREC_TM_NONE:
-        return m->n == 0 && m->t_ref == 0 && m->t_span == 0 && tail_zero(m, 0);
+    case CALREC_TM_NONE: return m->n == 0 && m->t_ref == 0 && m->t_span == 0 && tail_zero(m, 0);
     case CALREC_TM_LINEAR:
     case CALREC_TM_PARABOLA: {
         unsigned np = (m->kind == CALREC_TM_LINEAR) ? 2u : 3u;
@@ -192,8 +195,7 @@ static bool tmodel_ok(const struct calrec_tmodel *m, int32_t ylim)
         last = m->t_ref + (m->n - 1) * m->t_span;
         return last <= CALREC_LIM_T_MAX && all_in_range(m->p, (unsigned)m->n, -ylim, ylim) &&
                tail_zero(m, (unsigned)m->n);
-    default:
-        return false;
+    default: return false;
     }
 }
 
@@ -359,10 +361,12 @@ int calrec_encode(const struct calrec *rec, uint32_t seq, uint8_t *img, size_t c
         put_i32(img, CALREC_OFF_ACC_OFFSET + 4u * a, rec->acc_offset[a]);
         put_i32(img, CALREC_OFF_ACC_GAIN + 4u * a, rec->acc_gain[a]);
         for (k = 0; k < CALREC_AXES; k++) {
-            put_i32(img, CALREC_OFF_ACC_MISALIGN + 4u * (CALREC_AXES * a + k), rec->acc_misalign[a][k]);
+            put_i32(img, CALREC_OFF_ACC_MISALIGN + 4u * (CALREC_AXES * a + k),
+                    rec->acc_misalign[a][k]);
         }
         for (k = 0; k < CALREC_NONLIN_TERMS; k++) {
-            put_i32(img, CALREC_OFF_ACC_NONLIN + 4u * (CALREC_NONLIN_TERMS * a + k), rec->acc_nonlin[a][k]);
+            put_i32(img, CALREC_OFF_ACC_NONLIN + 4u * (CALREC_NONLIN_TERMS * a + k),
+                    rec->acc_nonlin[a][k]);
         }
         put_tmodel(img, CALREC_OFF_ACC_TBIAS + CALREC_TMODEL_SIZE * a, &rec->acc_tbias[a]);
         put_tmodel(img, CALREC_OFF_ACC_TSCALE + CALREC_TMODEL_SIZE * a, &rec->acc_tscale[a]);
@@ -450,10 +454,12 @@ int calrec_decode(const uint8_t *img, size_t len, const struct calrec_binding *e
         out->acc_offset[a] = get_i32(img, CALREC_OFF_ACC_OFFSET + 4u * a);
         out->acc_gain[a] = get_i32(img, CALREC_OFF_ACC_GAIN + 4u * a);
         for (k = 0; k < CALREC_AXES; k++) {
-            out->acc_misalign[a][k] = get_i32(img, CALREC_OFF_ACC_MISALIGN + 4u * (CALREC_AXES * a + k));
+            out->acc_misalign[a][k] = get_i32(img,
+                                              CALREC_OFF_ACC_MISALIGN + 4u * (CALREC_AXES * a + k));
         }
         for (k = 0; k < CALREC_NONLIN_TERMS; k++) {
-            out->acc_nonlin[a][k] = get_i32(img, CALREC_OFF_ACC_NONLIN + 4u * (CALREC_NONLIN_TERMS * a + k));
+            out->acc_nonlin[a][k] = get_i32(img, CALREC_OFF_ACC_NONLIN +
+                                                     4u * (CALREC_NONLIN_TERMS * a + k));
         }
         get_tmodel(img, CALREC_OFF_ACC_TBIAS + CALREC_TMODEL_SIZE * a, &out->acc_tbias[a]);
         get_tmodel(img, CALREC_OFF_ACC_TSCALE + CALREC_TMODEL_SIZE * a, &out->acc_tscale[a]);

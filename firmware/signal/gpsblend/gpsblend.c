@@ -120,8 +120,8 @@ int gpsb_step(struct gpsb *s, fx_q16_t a_g, uint32_t dt_ns, fx_q16_t *v_mps)
     /* v = v_gps + K * diff. diff (Q32 m/s, < 2^48 for speeds < 32768 m/s) times K (< 2^31)
      * would overflow int64: split diff into its Q16 part and the remaining 16 bits. */
     {
-        const int64_t hi = fx_asr64(diff, 16);              /* Q16 part */
-        const int64_t lo = diff - hi * 65536;               /* 0..65535 */
+        const int64_t hi = fx_asr64(diff, 16); /* Q16 part */
+        const int64_t lo = diff - hi * 65536;  /* 0..65535 */
         /* hi * k: Q16 * Q30 = Q46; lo * k: Q32 * Q30 = Q62, / 2^16 = Q46. Back to Q32: / 2^14. */
         const int64_t t = hi * k + fx_asr64(lo * k, 16);
         s->v_q32 = s->v_gps_q32 + fx_rshift_round64(t, 14);

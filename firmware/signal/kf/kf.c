@@ -68,7 +68,7 @@ static inline fx_i128_t mac_q30(fx_i128_t acc, fx_q30_t c, int64_t v)
     if (c == 0) return acc;
     if (c == FX_Q30_ONE) {
         fx_i128_t t;
-        t.lo = (uint64_t)v << 30;                             /* two's complement bits */
+        t.lo = (uint64_t)v << 30;                                   /* two's complement bits */
         t.hi = (uint64_t)(v < 0 ? -1 - ((-1 - v) >> 34) : v >> 34); /* floor(v / 2^34) */
         return fx_i128_add(acc, t);
     }
@@ -87,8 +87,7 @@ static bool cov_ok(const int64_t *s, unsigned n)
             int64_t o = s[i * n + j];
             if (o != s[j * n + i]) return false;
             if (o < -KF_P_MAX || o > KF_P_MAX) return false;
-            if (o != 0 &&
-                fx_i128_cmp(fx_i128_mul(o, o), fx_i128_mul(d, s[j * n + j])) > 0) {
+            if (o != 0 && fx_i128_cmp(fx_i128_mul(o, o), fx_i128_mul(d, s[j * n + j])) > 0) {
                 return false;
             }
         }
@@ -106,14 +105,16 @@ int kf_init(struct kf *f, unsigned n, const int32_t *x0, const int64_t *p0)
     f->overflow = false;
     for (i = 0; i < KF_N_MAX; i++) {
         f->x[i] = 0;
-        for (j = 0; j < KF_N_MAX; j++) f->p[i][j] = 0;
+        for (j = 0; j < KF_N_MAX; j++)
+            f->p[i][j] = 0;
     }
     if (p0 == NULL) return INC_ERR_NULL;
     if (n < 1u || n > KF_N_MAX) return INC_ERR_INVAL;
     if (!cov_ok(p0, n)) return INC_ERR_INVAL;
     for (i = 0; i < n; i++) {
         f->x[i] = x0 == NULL ? 0 : (int64_t)x0[i] * ((int64_t)1 << KF_X_FRAC);
-        for (j = 0; j < n; j++) f->p[i][j] = p0[i * n + j];
+        for (j = 0; j < n; j++)
+            f->p[i][j] = p0[i * n + j];
     }
     f->n = (uint8_t)n;
     return INC_OK;
@@ -156,13 +157,15 @@ KF_NOINLINE static void predict_x(struct kf *f, const struct kf_model *m, const 
     unsigned n = f->n, i, j;
     for (i = 0; i < n; i++) {
         fx_i128_t acc = fx_i128_from_i64(0);
-        for (j = 0; j < n; j++) acc = mac_q30(acc, m->a[i * n + j], f->x[j]);
+        for (j = 0; j < n; j++)
+            acc = mac_q30(acc, m->a[i * n + j], f->x[j]);
         for (j = 0; j < m->nu; j++) {
             acc = mac_q30(acc, m->b[i * m->nu + j], (int64_t)u[j] * ((int64_t)1 << KF_X_FRAC));
         }
         xn[i] = clamp_x(fx_i128_rshift_round(acc, FX_Q30_SHIFT, sat), sat);
     }
-    for (i = 0; i < n; i++) f->x[i] = xn[i];
+    for (i = 0; i < n; i++)
+        f->x[i] = xn[i];
 }
 
 /* (2) P = A P A' + Q: first AP (rounded once), then (AP) A' for the upper triangle. */
@@ -173,7 +176,8 @@ KF_NOINLINE static void predict_p(struct kf *f, const struct kf_model *m, bool *
     for (i = 0; i < n; i++) {
         for (j = 0; j < n; j++) {
             fx_i128_t acc = fx_i128_from_i64(0);
-            for (k = 0; k < n; k++) acc = mac_q30(acc, m->a[i * n + k], f->p[k][j]);
+            for (k = 0; k < n; k++)
+                acc = mac_q30(acc, m->a[i * n + k], f->p[k][j]);
             am[i][j] = fx_i128_rshift_round(acc, FX_Q30_SHIFT, sat);
         }
     }
@@ -181,7 +185,8 @@ KF_NOINLINE static void predict_p(struct kf *f, const struct kf_model *m, bool *
         for (j = i; j < n; j++) {
             fx_i128_t acc = fx_i128_from_i64(0);
             int64_t v;
-            for (k = 0; k < n; k++) acc = mac_q30(acc, m->a[j * n + k], am[i][k]);
+            for (k = 0; k < n; k++)
+                acc = mac_q30(acc, m->a[j * n + k], am[i][k]);
             v = fx_i128_rshift_round(acc, FX_Q30_SHIFT, sat);
             /* Both terms are clamped to 2^60 first, so their sum cannot overflow int64. */
             v = clamp_p(v, sat);
@@ -219,7 +224,8 @@ KF_NOINLINE static int64_t row_dot_v(const fx_q30_t *h, const int64_t *v, unsign
 {
     fx_i128_t acc = fx_i128_from_i64(0);
     unsigned i;
-    for (i = 0; i < n; i++) acc = mac_q30(acc, h[i], v[i]);
+    for (i = 0; i < n; i++)
+        acc = mac_q30(acc, h[i], v[i]);
     return fx_i128_rshift_round(acc, FX_Q30_SHIFT, sat);
 }
 
@@ -230,15 +236,15 @@ KF_NOINLINE static int64_t gain_and_state(int64_t *x, int64_t v, int64_t s, int6
     int64_t k, dx;
     if (fx_i128_div_i64(fx_i128_mul(v, (int64_t)1 << FX_Q30_SHIFT), s, &k) != INC_OK) *sat = true;
     dx = fx_i128_rshift_round(fx_i128_mul(k, y), FX_Q30_SHIFT, sat);
-    *x = clamp_x(fx_i128_rshift_round(fx_i128_add(fx_i128_from_i64(*x), fx_i128_from_i64(dx)), 0u,
-                                      sat),
-                 sat);
+    *x = clamp_x(
+        fx_i128_rshift_round(fx_i128_add(fx_i128_from_i64(*x), fx_i128_from_i64(dx)), 0u, sat),
+        sat);
     return k;
 }
 
 /* P+_ij = P_ij - k_i v_j - v_i k_j + (s k_i) k_j, rounded once (Joseph form, see the top). */
-KF_NOINLINE static int64_t joseph(int64_t pij, int64_t ki, int64_t vi, int64_t kj, int64_t vj, int64_t wi,
-                      bool *sat)
+KF_NOINLINE static int64_t joseph(int64_t pij, int64_t ki, int64_t vi, int64_t kj, int64_t vj,
+                                  int64_t wi, bool *sat)
 {
     fx_i128_t t = fx_i128_mul(wi, kj);
     t = fx_i128_sub(t, fx_i128_mul(ki, vj));
@@ -260,7 +266,8 @@ int kf_update_row(struct kf *f, const fx_q30_t *h, int64_t r, int32_t z)
     n = f->n;
 
     /* v = P h' and s = h P h' + r (the innovation variance, denominator of (4)). */
-    for (i = 0; i < n; i++) v[i] = row_dot_v(h, f->p[i], n, &sat);
+    for (i = 0; i < n; i++)
+        v[i] = row_dot_v(h, f->p[i], n, &sat);
     s = clamp_p(row_dot_v(h, v, n, &sat), &sat) + r; /* |h P h'| <= 2^60, r <= 2^60 */
     if (s <= 0) return INC_ERR_DEGENERATE;
 
@@ -268,7 +275,8 @@ int kf_update_row(struct kf *f, const fx_q30_t *h, int64_t r, int32_t z)
     y = (int64_t)z * ((int64_t)1 << KF_X_FRAC) - row_dot_v(h, f->x, n, &sat);
 
     /* (4) k = v / s and (3) x += k y, state by state. */
-    for (i = 0; i < n; i++) k[i] = gain_and_state(&f->x[i], v[i], s, y, &sat);
+    for (i = 0; i < n; i++)
+        k[i] = gain_and_state(&f->x[i], v[i], s, y, &sat);
 
     /* (5) Joseph form, upper triangle, mirrored. */
     for (i = 0; i < n; i++) {

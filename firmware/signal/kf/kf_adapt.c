@@ -35,7 +35,8 @@ void kf_adapt_restart(struct kf_adapt *f)
 {
     unsigned i;
     if (f == NULL) return;
-    for (i = 0; i < KF_ADAPT_WIN_MAX; i++) f->hist[i] = 0;
+    for (i = 0; i < KF_ADAPT_WIN_MAX; i++)
+        f->hist[i] = 0;
     f->sum = 0;
     f->x = 0;
     f->p = f->cfg.p0;
@@ -116,7 +117,7 @@ int kf_adapt_process(struct kf_adapt *f, int32_t z, int32_t *est, struct kf_adap
     dz = div_round_sat32((int64_t)f->count * z - f->sum, f->count - 1u);
     t = fx_i128_mac(fx_i128_from_i64(c->c), c->d, (int64_t)fx_uabs32(dz));
     q = fx_i128_rshift_round(t, 0u, &unused);
-    q = q > KF_P_MAX ? KF_P_MAX : q; /* C >= 1, D >= 0: q >= 1 */
+    q = q > KF_P_MAX ? KF_P_MAX : q;                               /* C >= 1, D >= 0: q >= 1 */
     t = fx_i128_mac(fx_i128_mul(c->a, (int64_t)1 << 16), c->b, q); /* (A 2^16 + B Q) */
     r = fx_i128_rshift_round(t, 16u, &unused);
     r = clamp_p(r);
@@ -125,11 +126,11 @@ int kf_adapt_process(struct kf_adapt *f, int32_t z, int32_t *est, struct kf_adap
     /* Step 3: prediction = previous estimate, P- = P + Q, K = P- / (P- + R). */
     pm = f->p + q; /* each <= 2^60 */
     pm = pm > KF_P_MAX ? KF_P_MAX : pm;
-    s = pm + r; /* >= q >= 1 */
+    s = pm + r;                                                                 /* >= q >= 1 */
     (void)fx_i128_div_i64(fx_i128_mul(pm, (int64_t)1 << FX_Q30_SHIFT), s, &kq); /* [0, 2^30] */
-    innov = (int64_t)z * ((int64_t)1 << KF_X_FRAC) - f->x;          /* |.| <= 2^48 */
+    innov = (int64_t)z * ((int64_t)1 << KF_X_FRAC) - f->x;                      /* |.| <= 2^48 */
     dx = fx_i128_rshift_round(fx_i128_mul(kq, innov), FX_Q30_SHIFT, &unused);
-    f->x += dx;                                                       /* between x and z */
+    f->x += dx; /* between x and z */
     f->p = fx_i128_rshift_round(fx_i128_mul(FX_Q30_ONE - kq, pm), FX_Q30_SHIFT, &unused);
 
     *est = (int32_t)fx_rshift_round64(f->x, KF_X_FRAC);
@@ -164,12 +165,14 @@ int kf_adapt6_init(struct kf_adapt6 *f, const struct kf_adapt_config cfg[KF_ADAP
 {
     unsigned i;
     if (f == NULL || cfg == NULL) return INC_ERR_NULL;
-    for (i = 0; i < KF_ADAPT_AXES; i++) f->axis[i].ready = false;
+    for (i = 0; i < KF_ADAPT_AXES; i++)
+        f->axis[i].ready = false;
     for (i = 0; i < KF_ADAPT_AXES; i++) {
         int err = kf_adapt_init(&f->axis[i], &cfg[i]);
         if (err != INC_OK) {
             unsigned j;
-            for (j = 0; j < KF_ADAPT_AXES; j++) f->axis[j].ready = false;
+            for (j = 0; j < KF_ADAPT_AXES; j++)
+                f->axis[j].ready = false;
             return err;
         }
     }

@@ -7,11 +7,11 @@
  * (generated in double precision by bisection on erfc; tests/slope checks it against libm).
  * n never exceeds 48: runs < 2^32 and E >= 2^-16 give r > 2^-48. */
 static const int32_t k_table[49] = {
-    0,      44203,  75389,  100540, 122076, 141156, 158437, 174330, 189113, 202983, 216085,
-    228531, 240408, 251785, 262719, 273257, 283438, 293295, 302857, 312148, 321190, 330000,
-    338597, 346994, 355204, 363239, 371111, 378827, 386397, 393829, 401130, 408306, 415364,
-    422310, 429147, 435882, 442519, 449061, 455513, 461878, 468160, 474361, 480486, 486535,
-    492513, 498422, 504263, 510040, 515754,
+    0,      44203,  75389,  100540, 122076, 141156, 158437, 174330, 189113, 202983,
+    216085, 228531, 240408, 251785, 262719, 273257, 283438, 293295, 302857, 312148,
+    321190, 330000, 338597, 346994, 355204, 363239, 371111, 378827, 386397, 393829,
+    401130, 408306, 415364, 422310, 429147, 435882, 442519, 449061, 455513, 461878,
+    468160, 474361, 480486, 486535, 492513, 498422, 504263, 510040, 515754,
 };
 
 /* log2(1 + i/32) in Q16, i = 0..32. */
@@ -36,8 +36,8 @@ static int32_t log2_q16(uint64_t x)
     /* Mantissa as a 32-bit fraction of [1, 2): f = x / 2^p - 1 in Q32. */
     m = p >= 32u ? (x >> (p - 32u)) : (x << (32u - p));
     m &= 0xFFFFFFFFull;
-    idx = (uint32_t)(m >> 27);                  /* top 5 bits: table interval */
-    frac = (uint32_t)((m >> 11) & 0xFFFFu);     /* next 16 bits: position inside it */
+    idx = (uint32_t)(m >> 27);              /* top 5 bits: table interval */
+    frac = (uint32_t)((m >> 11) & 0xFFFFu); /* next 16 bits: position inside it */
     return (int32_t)(p << 16) + log2_table[idx] +
            (int32_t)(((uint32_t)(log2_table[idx + 1u] - log2_table[idx]) * frac + 0x8000u) >> 16);
 }
@@ -114,7 +114,7 @@ static int64_t noise_term(const struct slope_budget *b, uint32_t n)
     /* k*sigma in Q32, divided by sqrt(N): ceil(k*sigma*2^16 / sqrt(N)) in Q16 uses
      * isqrt(N * 2^32) = floor(sqrt(N) * 2^16), which only makes the term larger. */
     const uint64_t ks = (uint64_t)(uint32_t)b->k_sigma * (uint32_t)b->noise_sigma_g; /* Q32 */
-    const uint64_t root = fx_isqrt64((uint64_t)n << 32);                              /* Q16 */
+    const uint64_t root = fx_isqrt64((uint64_t)n << 32);                             /* Q16 */
     if (root == 0u) {
         return INT32_MAX;
     }
@@ -125,7 +125,9 @@ static int64_t noise_term(const struct slope_budget *b, uint32_t n)
 static int32_t accel_bound(const struct slope_budget *b, int32_t a, int64_t noise)
 {
     /* |a| * sensitivity, rounded up: ceil(|a| * s / 2^30). */
-    const uint64_t sens = ((uint64_t)fx_uabs32(a) * (uint32_t)b->sensitivity + ((1ull << 30) - 1u)) >> 30;
+    const uint64_t sens = ((uint64_t)fx_uabs32(a) * (uint32_t)b->sensitivity +
+                           ((1ull << 30) - 1u)) >>
+                          30;
     int64_t e = (int64_t)sens + b->offset_g + b->nonlinearity_g + b->temperature_g + noise;
     return e > 2 * FX_Q16_ONE ? 2 * FX_Q16_ONE : (int32_t)e;
 }
@@ -193,7 +195,7 @@ int slope_estimate(const struct slope_cfg *cfg, const struct slope_input *in,
         const int32_t g = axis_value(in, cfg->gravity_axis, cfg->gravity_axis_negative);
         const int32_t eg = accel_bound(&cfg->budget, g, noise);
         const uint64_t mag2 = (uint64_t)((int64_t)s * s) + (uint64_t)((int64_t)g * g); /* Q32 */
-        const int64_t mag = fx_isqrt64_round(mag2);                                     /* Q16 */
+        const int64_t mag = fx_isqrt64_round(mag2);                                    /* Q16 */
         unsigned c;
         theta = fx_atan2_deg(s, g);
         /* Over a box that does not contain the origin, atan2 takes its extremes at the
@@ -224,9 +226,10 @@ int slope_estimate(const struct slope_cfg *cfg, const struct slope_input *in,
     {
         /* Grade bound: the larger grade change at theta +- bound (tan is monotonic below 90). */
         const int32_t hi = fx_add(theta, bound), lo = fx_sub(theta, bound);
-        int32_t gb = absdiff(slope_grade_pct(hi > FX_Q16_INT(89) ? FX_Q16_INT(89) : hi), out->grade_pct);
-        const int32_t gb2 =
-            absdiff(out->grade_pct, slope_grade_pct(lo < -FX_Q16_INT(89) ? -FX_Q16_INT(89) : lo));
+        int32_t gb = absdiff(slope_grade_pct(hi > FX_Q16_INT(89) ? FX_Q16_INT(89) : hi),
+                             out->grade_pct);
+        const int32_t gb2 = absdiff(out->grade_pct,
+                                    slope_grade_pct(lo < -FX_Q16_INT(89) ? -FX_Q16_INT(89) : lo));
         out->bound_pct = gb2 > gb ? gb2 : gb;
     }
     out->flags = flags;

@@ -79,8 +79,8 @@ static bool axis_stats(const struct still *s, unsigned i, uint64_t var_max, int3
                        uint64_t *var)
 {
     const uint64_t w = s->cfg.window;
-    const uint64_t a = fx_uabs64(s->sum[i]);      /* <= W 2^20 <= 2^31 */
-    const uint64_t v = w * s->sum2[i] - a * a;    /* >= 0 (Cauchy-Schwarz), <= 2^62 */
+    const uint64_t a = fx_uabs64(s->sum[i]);              /* <= W 2^20 <= 2^31 */
+    const uint64_t v = w * s->sum2[i] - a * a;            /* >= 0 (Cauchy-Schwarz), <= 2^62 */
     const int32_t m = fx_div64(s->sum[i], s->cfg.window); /* window >= 2, |mean d| < 2^31 */
     *mean = fx_sat32((int64_t)s->ref[i] + m);
     *var = v / (w * w);
@@ -114,7 +114,7 @@ static void window_finish(struct still *s)
         for (i = 0; i < 3u; i++) {
             const uint64_t a = fx_uabs32(l->accel_mean[i]);
             big |= a > (uint64_t)STILL_ONE_G_MAX;
-            n2 += a * a;                           /* 3 * 2^60 at most when !big */
+            n2 += a * a; /* 3 * 2^60 at most when !big */
         }
         if (big || n2 < (g - tol) * (g - tol) || n2 > (g + tol) * (g + tol)) {
             why |= STILL_WHY_ACCEL_NORM;

@@ -142,7 +142,7 @@ int tilt_feedback_gain(int64_t q_angle, int64_t r_angle, uint32_t dt_ns, fx_q30_
      * sqrt(Q (Q + 4R)) = sqrt(Q) sqrt(Q + 4R), each root to >= 30 bits. */
     ra = sqrt_scaled((uint64_t)q, &sa);
     rb = sqrt_scaled((uint64_t)q + 4u * (uint64_t)r_angle, &sb); /* < 2^63 */
-    prod = ra * rb; /* each root < 2^31 */
+    prod = ra * rb;                                              /* each root < 2^31 */
     sh = sa + sb;
     root = sh == 0u ? prod : (prod >> sh) + ((prod >> (sh - 1u)) & 1u);
     pm = (q + (int64_t)root + 1) / 2;
@@ -157,7 +157,7 @@ int tilt_feedback_gain(int64_t q_angle, int64_t r_angle, uint32_t dt_ns, fx_q30_
         return INC_OK;
     }
     s = fx_sqrt_q30((fx_q30_t)(FX_Q30_ONE - k2));
-    d = (int64_t)FX_Q30_ONE + s;                         /* 1 + sqrt(1 - K), Q30, [1, 2] */
+    d = (int64_t)FX_Q30_ONE + s; /* 1 + sqrt(1 - K), Q30, [1, 2] */
     (void)fx_i128_div_i64(fx_i128_mul(k2, (int64_t)1 << 60), d * d, &kb);
     *gain = (fx_q30_t)(kb > FX_Q30_ONE ? FX_Q30_ONE : kb);
     return INC_OK;
@@ -169,16 +169,16 @@ int tilt_config_default(struct tilt_config *cfg, uint32_t dt_nominal_ns)
     if (cfg == NULL) return INC_ERR_NULL;
     if (dt_nominal_ns == 0u || dt_nominal_ns > 100000000u) return INC_ERR_INVAL;
     cfg->mode = TILT_MODE_FEEDBACK;
-    cfg->accel_tol_g = FX_Q16_ONE / 10;           /* 0.1 g */
-    cfg->gyro_limit_dps = FX_Q16_INT(295);        /* ADIS1636x/1640x +-300 deg/s, 5 deg/s margin */
-    cfg->dt_max_ns = 100000000u;                  /* 100 ms */
+    cfg->accel_tol_g = FX_Q16_ONE / 10;    /* 0.1 g */
+    cfg->gyro_limit_dps = FX_Q16_INT(295); /* ADIS1636x/1640x +-300 deg/s, 5 deg/s margin */
+    cfg->dt_max_ns = 100000000u;           /* 100 ms */
     for (i = 0; i < TILT_AXES; i++) {
         struct tilt_axis_config *a = &cfg->axis[i];
-        a->q_angle = KF_P_ONE_Q16 / 1000;        /* 1e-3 deg^2/s: ARW 0.031 deg/sqrt(s) */
-        a->q_bias = KF_P_ONE_Q16 / 5000000;      /* 2e-7 (deg/s)^2/s: RRW 0.00045 deg/s/sqrt(s) */
-        a->r_angle = KF_P_ONE_Q16;               /* 1 deg^2 */
+        a->q_angle = KF_P_ONE_Q16 / 1000;   /* 1e-3 deg^2/s: ARW 0.031 deg/sqrt(s) */
+        a->q_bias = KF_P_ONE_Q16 / 5000000; /* 2e-7 (deg/s)^2/s: RRW 0.00045 deg/s/sqrt(s) */
+        a->r_angle = KF_P_ONE_Q16;          /* 1 deg^2 */
         a->p0_angle = a->r_angle;
-        a->p0_bias = KF_P_ONE_Q16;               /* 1 (deg/s)^2 */
+        a->p0_bias = KF_P_ONE_Q16; /* 1 (deg/s)^2 */
         a->bias0_dps = 0;
         int err = tilt_feedback_gain(a->q_angle, a->r_angle, dt_nominal_ns, &a->bias_gain);
         if (err != INC_OK) return err;
@@ -273,8 +273,10 @@ static bool accel_ok(const struct tilt *t, const struct tilt_input *in)
 static int64_t wrap_internal(int64_t x)
 {
     const int64_t full = (int64_t)FX_DEG_360 * 65536, half = (int64_t)FX_DEG_180 * 65536;
-    while (x > half) x -= full;
-    while (x <= -half) x += full;
+    while (x > half)
+        x -= full;
+    while (x <= -half)
+        x += full;
     return x;
 }
 
@@ -316,8 +318,8 @@ static int32_t same_turn(fx_q16_t acc_angle, int64_t x)
 
 /* One axis, one step (the filter has started, 0 < dt <= dt_max). Kept out of line so that its
  * model arrays do not add to tilt_step's frame (see KF_NOINLINE in kf.c). */
-TILT_NOINLINE static bool step_axis(struct tilt *t, unsigned i, fx_q16_t w, bool gyro_ok, bool acc_ok,
-                      fx_q16_t acc_angle, int64_t dtq)
+TILT_NOINLINE static bool step_axis(struct tilt *t, unsigned i, fx_q16_t w, bool gyro_ok,
+                                    bool acc_ok, fx_q16_t acc_angle, int64_t dtq)
 {
     const struct tilt_axis_config *c = &t->cfg.axis[i];
     struct tilt_axis_state *s = &t->ax[i];
@@ -327,7 +329,8 @@ TILT_NOINLINE static bool step_axis(struct tilt *t, unsigned i, fx_q16_t w, bool
 
     if (!gyro_ok) {
         /* Unknown rate: hold the angle and let its variance grow by (limit dt)^2. */
-        int64_t step = fx_i128_rshift_round(fx_i128_mul(t->cfg.gyro_limit_dps, dtq), 30u, &overflow);
+        int64_t step = fx_i128_rshift_round(fx_i128_mul(t->cfg.gyro_limit_dps, dtq), 30u,
+                                            &overflow);
         q00 += kf_var_from_sigma((int32_t)(step > INT32_MAX ? INT32_MAX : step));
     }
     /* Coasting never raises the angle variance above TILT_VAR_CAP. */
@@ -371,7 +374,7 @@ TILT_NOINLINE static bool step_axis(struct tilt *t, unsigned i, fx_q16_t w, bool
         m.a = &a;
         m.b = &b;
         m.q = &q00;
-        err = kf_predict(&s->kf, &m, &u);           /* 4c/4d: w_theta(k) */
+        err = kf_predict(&s->kf, &m, &u); /* 4c/4d: w_theta(k) */
         if (err == INC_ERR_OVERFLOW) overflow = true;
         x_pred = s->kf.x[0];
         if (acc_ok) {
@@ -411,7 +414,8 @@ int tilt_step(struct tilt *t, const struct tilt_input *in, uint32_t dt_ns, struc
     clear_output(out);
     if (!t->ready) return INC_ERR_STATE;
     if (t->started && dt_ns == 0u) {
-        for (i = 0; i < TILT_AXES; i++) fill_axis_output(t, i, out);
+        for (i = 0; i < TILT_AXES; i++)
+            fill_axis_output(t, i, out);
         return INC_ERR_INVAL;
     }
 
@@ -436,7 +440,8 @@ int tilt_step(struct tilt *t, const struct tilt_input *in, uint32_t dt_ns, struc
             out->flags |= TILT_F_NOT_STARTED;
             return INC_OK;
         }
-        for (i = 0; i < TILT_AXES; i++) start_axis(t, i, acc_angle[i]);
+        for (i = 0; i < TILT_AXES; i++)
+            start_axis(t, i, acc_angle[i]);
         t->started = true;
     } else {
         int64_t dtq;
@@ -455,11 +460,13 @@ int tilt_step(struct tilt *t, const struct tilt_input *in, uint32_t dt_ns, struc
             fx_q16_t w = in->gyro_dps[i];
             uint32_t sat_flag = i == TILT_ROLL ? TILT_IN_GYRO_SAT_X : TILT_IN_GYRO_SAT_Y;
             bool gyro_ok = (in->flags & sat_flag) == 0u && fx_abs(w) < t->cfg.gyro_limit_dps;
-            if (!gyro_ok) out->flags |= i == TILT_ROLL ? TILT_F_GYRO_REJ_ROLL : TILT_F_GYRO_REJ_PITCH;
+            if (!gyro_ok)
+                out->flags |= i == TILT_ROLL ? TILT_F_GYRO_REJ_ROLL : TILT_F_GYRO_REJ_PITCH;
             if (step_axis(t, i, w, gyro_ok, acc_ok, acc_angle[i], dtq)) overflow = true;
         }
     }
-    for (i = 0; i < TILT_AXES; i++) fill_axis_output(t, i, out);
+    for (i = 0; i < TILT_AXES; i++)
+        fill_axis_output(t, i, out);
     if (overflow) out->flags |= TILT_F_OVERFLOW;
     out->valid = !overflow;
     return INC_OK;

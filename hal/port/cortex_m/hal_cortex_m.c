@@ -11,23 +11,23 @@
 
 #define CM_REG(addr) (*(volatile uint32_t *)(addr))
 
-#define CM_ICSR CM_REG(0xE000ED04u)      /* Interrupt Control and State */
-#define CM_ICSR_PENDSTSET (1u << 26)     /* SysTick exception pending (read) */
-#define CM_ICSR_PENDSTCLR (1u << 25)     /* clear it (write) */
+#define CM_ICSR CM_REG(0xE000ED04u)  /* Interrupt Control and State */
+#define CM_ICSR_PENDSTSET (1u << 26) /* SysTick exception pending (read) */
+#define CM_ICSR_PENDSTCLR (1u << 25) /* clear it (write) */
 
-#define CM_SYST_CSR CM_REG(0xE000E010u)  /* SysTick control and status */
-#define CM_SYST_RVR CM_REG(0xE000E014u)  /* reload value */
-#define CM_SYST_CVR CM_REG(0xE000E018u)  /* current value; any write clears it */
+#define CM_SYST_CSR CM_REG(0xE000E010u) /* SysTick control and status */
+#define CM_SYST_RVR CM_REG(0xE000E014u) /* reload value */
+#define CM_SYST_CVR CM_REG(0xE000E018u) /* current value; any write clears it */
 #define CM_SYST_CSR_ENABLE (1u << 0)
 #define CM_SYST_CSR_TICKINT (1u << 1)
-#define CM_SYST_CSR_CLKSOURCE (1u << 2)  /* 1 = processor clock */
-#define CM_SYST_MAX 0x00FFFFFFu          /* 24-bit counter: period 2^24 cycles */
+#define CM_SYST_CSR_CLKSOURCE (1u << 2) /* 1 = processor clock */
+#define CM_SYST_MAX 0x00FFFFFFu         /* 24-bit counter: period 2^24 cycles */
 
-#define CM_DEMCR CM_REG(0xE000EDFCu)     /* Debug Exception and Monitor Control */
-#define CM_DEMCR_TRCENA (1u << 24)       /* enables the DWT */
+#define CM_DEMCR CM_REG(0xE000EDFCu) /* Debug Exception and Monitor Control */
+#define CM_DEMCR_TRCENA (1u << 24)   /* enables the DWT */
 #define CM_DWT_CTRL CM_REG(0xE0001000u)
 #define CM_DWT_CTRL_CYCCNTENA (1u << 0)
-#define CM_DWT_CTRL_NOCYCCNT (1u << 25)  /* the counter is not implemented */
+#define CM_DWT_CTRL_NOCYCCNT (1u << 25) /* the counter is not implemented */
 #define CM_DWT_CYCCNT CM_REG(0xE0001004u)
 
 /* The instance whose wraps SysTick_Handler counts (the last one initialised in SysTick mode). */
@@ -143,8 +143,8 @@ static int cm_irq_attach(void *ctx, hal_pin_t pin, enum hal_edge edge, hal_irq_c
     size_t i;
     int err;
 
-    if (pin == HAL_PIN_NONE || (edge != HAL_EDGE_RISING && edge != HAL_EDGE_FALLING &&
-                                edge != HAL_EDGE_BOTH)) {
+    if (pin == HAL_PIN_NONE ||
+        (edge != HAL_EDGE_RISING && edge != HAL_EDGE_FALLING && edge != HAL_EDGE_BOTH)) {
         return INC_ERR_INVAL;
     }
     for (i = 0; i < HAL_CM_IRQ_SLOTS; i++) {
@@ -240,7 +240,7 @@ static int cm_irq_wait(void *ctx, uint64_t deadline_ns)
 }
 
 static const struct hal_ops hal_cm_ops = {
-    cm_pin_write, cm_pin_read, cm_now_ns, cm_delay_ns,
+    cm_pin_write,  cm_pin_read, cm_now_ns,     cm_delay_ns,
     cm_irq_attach, cm_irq_wait, cm_crit_enter, cm_crit_exit,
 };
 
@@ -298,8 +298,8 @@ int hal_cm_init(struct hal_cm *cm, const struct hal_cm_config *cfg, struct hal *
     size_t i;
     int err;
 
-    if (cm == NULL || cfg == NULL || hal == NULL || cfg->gpio == NULL ||
-        cfg->gpio->write == NULL || cfg->gpio->read == NULL || cfg->gpio->irq_enable == NULL) {
+    if (cm == NULL || cfg == NULL || hal == NULL || cfg->gpio == NULL || cfg->gpio->write == NULL ||
+        cfg->gpio->read == NULL || cfg->gpio->irq_enable == NULL) {
         return INC_ERR_NULL;
     }
     if (cfg->timebase != HAL_CM_TIME_SYSTICK && cfg->timebase != HAL_CM_TIME_DWT) {

@@ -71,15 +71,53 @@ struct rt_vector_table {
 __attribute__((used, section(".isr_vector"))) const struct rt_vector_table rt_vectors = {
     __stack_top__,
     {
-        Reset_Handler, NMI_Handler, HardFault_Handler, MemManage_Handler, BusFault_Handler,
-        UsageFault_Handler, 0, 0, 0, 0, SVC_Handler, DebugMon_Handler, 0, PendSV_Handler,
+        Reset_Handler,
+        NMI_Handler,
+        HardFault_Handler,
+        MemManage_Handler,
+        BusFault_Handler,
+        UsageFault_Handler,
+        0,
+        0,
+        0,
+        0,
+        SVC_Handler,
+        DebugMon_Handler,
+        0,
+        PendSV_Handler,
         SysTick_Handler,
-        IRQ0_Handler, IRQ1_Handler, IRQ2_Handler, IRQ3_Handler, IRQ4_Handler, IRQ5_Handler,
-        IRQ6_Handler, IRQ7_Handler, IRQ8_Handler, IRQ9_Handler, IRQ10_Handler, IRQ11_Handler,
-        IRQ12_Handler, IRQ13_Handler, IRQ14_Handler, IRQ15_Handler, IRQ16_Handler,
-        IRQ17_Handler, IRQ18_Handler, IRQ19_Handler, IRQ20_Handler, IRQ21_Handler,
-        IRQ22_Handler, IRQ23_Handler, IRQ24_Handler, IRQ25_Handler, IRQ26_Handler,
-        IRQ27_Handler, IRQ28_Handler, IRQ29_Handler, IRQ30_Handler, IRQ31_Handler,
+        IRQ0_Handler,
+        IRQ1_Handler,
+        IRQ2_Handler,
+        IRQ3_Handler,
+        IRQ4_Handler,
+        IRQ5_Handler,
+        IRQ6_Handler,
+        IRQ7_Handler,
+        IRQ8_Handler,
+        IRQ9_Handler,
+        IRQ10_Handler,
+        IRQ11_Handler,
+        IRQ12_Handler,
+        IRQ13_Handler,
+        IRQ14_Handler,
+        IRQ15_Handler,
+        IRQ16_Handler,
+        IRQ17_Handler,
+        IRQ18_Handler,
+        IRQ19_Handler,
+        IRQ20_Handler,
+        IRQ21_Handler,
+        IRQ22_Handler,
+        IRQ23_Handler,
+        IRQ24_Handler,
+        IRQ25_Handler,
+        IRQ26_Handler,
+        IRQ27_Handler,
+        IRQ28_Handler,
+        IRQ29_Handler,
+        IRQ30_Handler,
+        IRQ31_Handler,
     },
 };
 
@@ -121,16 +159,15 @@ void Reset_Handler(void)
  */
 __attribute__((naked)) void Default_Handler(void)
 {
-    __asm volatile(
-        "mov  r1, sp\n\t"
-        "ldr  r0, =__stack_bottom__ + 512\n\t"
-        "cmp  r1, r0\n\t"
-        "bhs  1f\n\t"
-        "ldr  r0, =__stack_top__\n\t"
-        "mov  sp, r0\n"
-        "1:\n\t"
-        "mrs  r0, ipsr\n\t"
-        "bl   rt_fault\n\t"
-        "b    .\n\t"
-        ".ltorg");
+    __asm volatile("mov  r1, sp\n\t"
+                   "ldr  r0, =__stack_bottom__ + 512\n\t"
+                   "cmp  r1, r0\n\t"
+                   "bhs  1f\n\t"
+                   "ldr  r0, =__stack_top__\n\t"
+                   "mov  sp, r0\n"
+                   "1:\n\t"
+                   "mrs  r0, ipsr\n\t"
+                   "bl   rt_fault\n\t"
+                   "b    .\n\t"
+                   ".ltorg");
 }

@@ -97,7 +97,8 @@ static void resolve(struct sim_pinbus *bus, unsigned pin)
 
     if (p->master_drives) {
         level = p->master_level;
-        if (p->dev_mask != 0 && (p->dev_level & p->dev_mask) != (p->master_level ? p->dev_mask : 0)) {
+        if (p->dev_mask != 0 &&
+            (p->dev_level & p->dev_mask) != (p->master_level ? p->dev_mask : 0)) {
             conflict = true;
         }
     } else if (p->dev_mask != 0) {

@@ -150,7 +150,8 @@ static void sclk_edge(struct sim_spi_slave *s, bool level, uint64_t t)
     bool sampling = s->cpha == 0 ? leading : !leading;
     bool first = !s->edge_seen;
 
-    if (!first && s->cfg.timing.min_half_ns != 0 && t - s->t_last_edge < s->cfg.timing.min_half_ns) {
+    if (!first && s->cfg.timing.min_half_ns != 0 &&
+        t - s->t_last_edge < s->cfg.timing.min_half_ns) {
         report(s, SIM_VIOL_SCLK_FAST, t, t - s->t_last_edge, s->cfg.timing.min_half_ns);
     }
     s->edge_seen = true;

@@ -40,8 +40,8 @@ unsigned sim_violation_count(const struct sim_violation_log *log, enum sim_viola
 const char *sim_violation_kind_name(enum sim_violation_kind kind)
 {
     static const char *const names[SIM_VIOL_KIND_COUNT] = {
-        "sclk-too-fast", "cs-setup", "cs-hold", "stall", "mosi-setup",
-        "sclk-idle-level", "partial-word", "contention", "busy", "protocol",
+        "sclk-too-fast",   "cs-setup",     "cs-hold",    "stall", "mosi-setup",
+        "sclk-idle-level", "partial-word", "contention", "busy",  "protocol",
     };
     return (unsigned)kind < SIM_VIOL_KIND_COUNT ? names[kind] : "unknown";
 }

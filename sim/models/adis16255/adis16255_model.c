@@ -32,8 +32,9 @@ enum {
     R_COMMAND = 0x3E,
 };
 #define IDX(a) ((unsigned)(a) >> 1)
-#define ND_OUTPUTS ((1u << IDX(R_SUPPLY)) | (1u << IDX(R_GYRO)) | (1u << IDX(R_AUX_ADC)) | \
-                    (1u << IDX(R_TEMP)) | (1u << IDX(R_ANGL)))
+#define ND_OUTPUTS                                                                                \
+    ((1u << IDX(R_SUPPLY)) | (1u << IDX(R_GYRO)) | (1u << IDX(R_AUX_ADC)) | (1u << IDX(R_TEMP)) | \
+     (1u << IDX(R_ANGL)))
 
 #define ST_SUPPLY_LOW 0x0001u
 #define ST_SUPPLY_HIGH 0x0002u
@@ -60,21 +61,21 @@ enum {
 
 /* [U] timing of the part: the strict side, so a driver that cuts it is caught. */
 static const struct sim_spi_timing timing_fast = {
-    400u,   /* 2.5 MHz (A4, >= 64 SPS) */
-    0u, 100u, 100u,
-    30000u, /* tSTALL [U]: Linux adis16260's 30 us, not the staging driver's 9 us */
-    25u, 100u};
+    400u, /* 2.5 MHz (A4, >= 64 SPS) */
+    0u,   100u,
+    100u, 30000u, /* tSTALL [U]: Linux adis16260's 30 us, not the staging driver's 9 us */
+    25u,  100u};
 static const struct sim_spi_timing timing_slow = {
-    1000u,  /* 1 MHz (A4, < 64 SPS) */
-    0u, 100u, 100u,
-    75000u, /* [U] low-power stall, by analogy with the ADIS1640x */
-    25u, 100u};
+    1000u,                     /* 1 MHz (A4, < 64 SPS) */
+    0u,    100u, 100u, 75000u, /* [U] low-power stall, by analogy with the ADIS1640x */
+    25u,   100u};
 
 /* Registers kept in flash (restored by reset, saved by flash update) and write masks. */
 static bool nonvolatile(unsigned addr)
 {
-    return addr == R_GYRO_OFF || addr == R_GYRO_SCALE || (addr >= R_ALM_MAG1 && addr <= R_ALM_CTRL) ||
-           addr == R_MSC_CTRL || addr == R_SMPL_PRD || addr == R_SENS_AVG;
+    return addr == R_GYRO_OFF || addr == R_GYRO_SCALE ||
+           (addr >= R_ALM_MAG1 && addr <= R_ALM_CTRL) || addr == R_MSC_CTRL || addr == R_SMPL_PRD ||
+           addr == R_SENS_AVG;
 }
 
 static uint16_t write_mask(unsigned addr)
@@ -82,16 +83,12 @@ static uint16_t write_mask(unsigned addr)
     switch (addr) {
     case R_GYRO_OFF:
     case R_GYRO_SCALE:
-    case R_AUX_DAC:
-        return 0x0FFFu;
-    case R_MSC_CTRL:
-        return 0x0707u;
-    case R_SENS_AVG:
-        return 0x0707u;
+    case R_AUX_DAC: return 0x0FFFu;
+    case R_MSC_CTRL: return 0x0707u;
+    case R_SENS_AVG: return 0x0707u;
     case R_SMPL_PRD:
     case R_SLP_CNT:
-    case R_GPIO_CTRL:
-        return 0x00FFu;
+    case R_GPIO_CTRL: return 0x00FFu;
     default:
         if (addr >= R_ALM_MAG1 && addr <= R_ALM_CTRL) {
             return 0xFFFFu;
@@ -379,7 +376,7 @@ static void command(struct sim_adis16255 *m, uint8_t v, uint64_t t)
                 m->flash[i] = m->reg[i];
             }
         }
-        m->flash[IDX(R_MSC_CTRL)] &= (uint16_t)~(MSC_ST_INT | MSC_ST_POS | MSC_ST_NEG);
+        m->flash[IDX(R_MSC_CTRL)] &= (uint16_t) ~(MSC_ST_INT | MSC_ST_POS | MSC_ST_NEG);
         m->reg[IDX(R_ENDURANCE)]++;
         dur += m->cfg.times.flash_update_ns;
     }

@@ -4,10 +4,10 @@
 #include <string.h>
 
 /* Violations that make the part drop a frame. */
-#define FRAME_BROKEN                                                                       \
-    (SIM_SPI_FLAG(SIM_VIOL_SCLK_FAST) | SIM_SPI_FLAG(SIM_VIOL_CS_SETUP) |                   \
-     SIM_SPI_FLAG(SIM_VIOL_CS_HOLD) | SIM_SPI_FLAG(SIM_VIOL_STALL) |                        \
-     SIM_SPI_FLAG(SIM_VIOL_MOSI_SETUP) | SIM_SPI_FLAG(SIM_VIOL_SCLK_IDLE) |                 \
+#define FRAME_BROKEN                                                        \
+    (SIM_SPI_FLAG(SIM_VIOL_SCLK_FAST) | SIM_SPI_FLAG(SIM_VIOL_CS_SETUP) |   \
+     SIM_SPI_FLAG(SIM_VIOL_CS_HOLD) | SIM_SPI_FLAG(SIM_VIOL_STALL) |        \
+     SIM_SPI_FLAG(SIM_VIOL_MOSI_SETUP) | SIM_SPI_FLAG(SIM_VIOL_SCLK_IDLE) | \
      SIM_SPI_FLAG(SIM_VIOL_PARTIAL_WORD))
 
 static uint16_t garbage(struct sim_adis_core *c)

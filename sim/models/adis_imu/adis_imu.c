@@ -14,7 +14,7 @@
 
 #define REG_FLASH_CNT 0x00u
 #define REG_SUPPLY 0x02u
-#define REG_GYRO 0x04u       /* x, y, z at 0x04, 0x06, 0x08 */
+#define REG_GYRO 0x04u /* x, y, z at 0x04, 0x06, 0x08 */
 #define REG_ACCL 0x0Au
 #define REG_GYRO_OFF 0x1Au
 #define REG_ACCL_OFF 0x20u
@@ -43,37 +43,38 @@
 
 /* tB = 1/1638.4 s = 9765625/16 ns exactly (sensors.md §3.4, Linux 1638.404 SPS). */
 #define TB_16 9765625ull
-#define TB_SLOW 31u                 /* SMPL_PRD[7]: 52.851 SPS base = 1638.4/31 */
+#define TB_SLOW 31u /* SMPL_PRD[7]: 52.851 SPS base = 1638.4/31 */
 
-#define GYRO_OFF_LSB_DPS 0.0125     /* sensors.md §3.4, seed 003 */
-#define GYRO_LIMIT_COUNTS 6000      /* [U] output clips at the rated range: +-300/150/75 deg/s
+#define GYRO_OFF_LSB_DPS 0.0125 /* sensors.md §3.4, seed 003 */
+#define GYRO_LIMIT_COUNTS \
+    6000                     /* [U] output clips at the rated range: +-300/150/75 deg/s
                                        are 6000 counts at 0.05/0.025/0.0125 deg/s */
-#define TEMP_LSB_1636X 0.136        /* sensors.md §3.3 */
+#define TEMP_LSB_1636X 0.136 /* sensors.md §3.3 */
 #define TEMP_LSB_1640X 0.14
 #define SUPPLY_LSB_V 0.002418
 #define MAGN_LSB_GAUSS 0.0005
 #define AUX_LSB_V 0.0008058
-#define SUPPLY_MIN_V 4.75           /* DIAG_STAT[0], [1] (sensors.md §3.4) */
+#define SUPPLY_MIN_V 4.75 /* DIAG_STAT[0], [1] (sensors.md §3.4) */
 #define SUPPLY_MAX_V 5.25
-#define MEM_TEST_MS_NORMAL 17u      /* ADIS16405 flash test 17 / 90 ms (sensors.md §3.4) */
+#define MEM_TEST_MS_NORMAL 17u /* ADIS16405 flash test 17 / 90 ms (sensors.md §3.4) */
 #define MEM_TEST_MS_LOW_POWER 90u
-#define CS_SETUP_NS 49u             /* [U] tCS recollection 48.8 ns */
-#define CS_HOLD_NS 49u              /* [U] taken equal to tCS */
-#define MOSI_SETUP_NS 20u           /* [U] */
-#define MISO_DELAY_NS 100u          /* [U] tDAV */
-#define PERIOD_NORMAL_NS 500u       /* 2 MHz (sensors.md §3.1) */
-#define PERIOD_LOW_POWER_NS 3333u   /* 300 kHz */
-#define PERIOD_BURST_NS 1000u       /* 1 MHz */
+#define CS_SETUP_NS 49u           /* [U] tCS recollection 48.8 ns */
+#define CS_HOLD_NS 49u            /* [U] taken equal to tCS */
+#define MOSI_SETUP_NS 20u         /* [U] */
+#define MISO_DELAY_NS 100u        /* [U] tDAV */
+#define PERIOD_NORMAL_NS 500u     /* 2 MHz (sensors.md §3.1) */
+#define PERIOD_LOW_POWER_NS 3333u /* 300 kHz */
+#define PERIOD_BURST_NS 1000u     /* 1 MHz */
 
 struct variant {
     const char *name;
     uint16_t prod_id;
     bool is_1640x;
-    double accel_lsb_g;       /* sensors.md §3.3 */
-    int32_t accel_limit;      /* [U] rated range in counts: 10, 1.7, 5, 18, 18, 18 g */
-    unsigned supply_bits;     /* 12 (1636x) / 14 (1640x, Linux [U]) */
-    unsigned startup_ms;      /* power-on: ADIS16405 220 ms, ADIS16367 180 ms (normal mode) */
-    unsigned reset_ms[2];     /* normal, low power: ADIS16405 100/170, ADIS16367 60/130 [U
+    double accel_lsb_g;   /* sensors.md §3.3 */
+    int32_t accel_limit;  /* [U] rated range in counts: 10, 1.7, 5, 18, 18, 18 g */
+    unsigned supply_bits; /* 12 (1636x) / 14 (1640x, Linux [U]) */
+    unsigned startup_ms;  /* power-on: ADIS16405 220 ms, ADIS16367 180 ms (normal mode) */
+    unsigned reset_ms[2]; /* normal, low power: ADIS16405 100/170, ADIS16367 60/130 [U
                                  for the 1636x, taken from the ADIS16367] */
 };
 
@@ -113,9 +114,9 @@ static const struct wreg wregs_1640x[] = {
     {0x26, 0x3FFF, 14}, {0x28, 0x3FFF, 14}, {0x2A, 0x3FFF, 14}, /* X/Y/ZMAGN_HIF */
     {0x2C, 0x0FFF, 0},  {0x2E, 0x0FFF, 0},  {0x30, 0x0FFF, 0},  /* X/Y/ZMAGN_SIF */
     {0x32, 0xFFFF, 0},  {0x34, 0x0FC7, 0},  {0x36, 0x00FF, 0},
-    {0x38, 0x0707, 0},  {0x3A, 0x01FF, 0},
-    {0x40, 0xFFFF, 0},  {0x42, 0xFFFF, 0},  {0x44, 0x00FF, 0},  /* ALM_MAG1/2, ALM_SMPL1 */
-    {0x46, 0x00FF, 0},  {0x48, 0xFFFF, 0},  {0x4A, 0x0FFF, 0},  /* ALM_SMPL2, ALM_CTRL, AUX_DAC */
+    {0x38, 0x0707, 0},  {0x3A, 0x01FF, 0},  {0x40, 0xFFFF, 0},
+    {0x42, 0xFFFF, 0},  {0x44, 0x00FF, 0},                     /* ALM_MAG1/2, ALM_SMPL1 */
+    {0x46, 0x00FF, 0},  {0x48, 0xFFFF, 0},  {0x4A, 0x0FFF, 0}, /* ALM_SMPL2, ALM_CTRL, AUX_DAC */
 };
 
 static const struct wreg *find_wreg(const struct sim_adis_imu *m, uint8_t even)
@@ -510,7 +511,7 @@ static void store_to_flash(struct sim_adis_imu *m)
         m->flash[IDX(t[i].addr)] = m->reg[IDX(t[i].addr)];
     }
     /* The self-test and memory-test bits are commands, not settings. */
-    m->flash[IDX(REG_MSC_CTRL)] &= (uint16_t)~(MSC_SELF_TEST | MSC_MEM_TEST);
+    m->flash[IDX(REG_MSC_CTRL)] &= (uint16_t) ~(MSC_SELF_TEST | MSC_MEM_TEST);
     m->flash[IDX(REG_FLASH_CNT)]++;
     m->reg[IDX(REG_FLASH_CNT)] = m->flash[IDX(REG_FLASH_CNT)];
     m->flash_writes++;
@@ -619,9 +620,7 @@ static void write_byte(struct sim_adis_imu *m, uint8_t addr, uint8_t value, uint
             restart_sampling(m, t);
         }
         break;
-    case REG_SENS_AVG:
-        apply_taps(m);
-        break;
+    case REG_SENS_AVG: apply_taps(m); break;
     case REG_MSC_CTRL:
         if (!hi) {
             apply_dr(m);
@@ -632,8 +631,7 @@ static void write_byte(struct sim_adis_imu *m, uint8_t addr, uint8_t value, uint
             start_busy(m, t, m->low_power ? MEM_TEST_MS_LOW_POWER : MEM_TEST_MS_NORMAL);
         }
         break;
-    default:
-        break;
+    default: break;
     }
 }
 

@@ -60,10 +60,10 @@ static const double lsb_g[4] = {0.00075, 0.001, 0.002, 0.00625};
 
 /* Output data rate in mHz per variant and MODE[1:0] 0..2 (sensors.md 1.6); 0 = no such mode. */
 static const uint32_t odr_mhz[4][3] = {
-    {250000u, 250000u, 0u},       /* D01: normal, bypass */
-    {125000u, 62500u, 0u},        /* E02: normal, narrow (ODR halved) */
-    {100000u, 50000u, 400000u},   /* E04: normal, narrow, wide */
-    {200000u, 50000u, 400000u},   /* E05 */
+    {250000u, 250000u, 0u},     /* D01: normal, bypass */
+    {125000u, 62500u, 0u},      /* E02: normal, narrow (ODR halved) */
+    {100000u, 50000u, 400000u}, /* E04: normal, narrow, wide */
+    {200000u, 50000u, 400000u}, /* E05 */
 };
 
 /* Temperature (D01): counts = T * 1.8 + 214.6 (Linux offset -214.6 LSB, 0.555556 degC/LSB). */
@@ -242,7 +242,7 @@ static void sample_event(void *arg, uint64_t t)
 static uint8_t next_addr(uint8_t a)
 {
     if (a == R_X_LSB) {
-        return R_Z_MSB;   /* the documented X_LSB -> Z_MSB wrap */
+        return R_Z_MSB; /* the documented X_LSB -> Z_MSB wrap */
     }
     if (a == R_BUF_DATA) {
         return R_BUF_DATA; /* FIFO port: the address does not move */
@@ -253,62 +253,44 @@ static uint8_t next_addr(uint8_t a)
 static bool ind_valid(const struct sim_sca3000 *m, uint8_t sel)
 {
     switch (sel) {
-    case I_I2C_DISABLE:
-        return m->variant == SIM_SCA3000_D01;
+    case I_I2C_DISABLE: return m->variant == SIM_SCA3000_D01;
     case I_MD_CTRL:
     case I_MD_Y_TH:
     case I_MD_X_TH:
     case I_MD_Z_TH:
-    case I_OUT_CTRL:
-        return true;
-    default:
-        return false;
+    case I_OUT_CTRL: return true;
+    default: return false;
     }
 }
 
 static uint8_t peek(const struct sim_sca3000 *m, uint8_t a)
 {
     switch (a) {
-    case R_REVID:
-        return m->revid;
+    case R_REVID: return m->revid;
     case R_STATUS:
         return (uint8_t)((m->unlocked ? STATUS_UNLOCKED : 0u) |
                          ((m->faults & SIM_SCA3000_FAULT_EEPROM) != 0u ? STATUS_EEPROM : 0u) |
                          (m->frame_error ? STATUS_FRAME : 0u));
-    case R_X_LSB:
-        return (uint8_t)(m->lx & 0xFFu);
-    case R_X_MSB:
-        return (uint8_t)(m->lx >> 8);
-    case R_Y_LSB:
-        return (uint8_t)(m->ly & 0xFFu);
-    case R_Y_MSB:
-        return (uint8_t)(m->ly >> 8);
-    case R_Z_LSB:
-        return (uint8_t)(m->lz & 0xFFu);
-    case R_Z_MSB:
-        return (uint8_t)(m->lz >> 8);
+    case R_X_LSB: return (uint8_t)(m->lx & 0xFFu);
+    case R_X_MSB: return (uint8_t)(m->lx >> 8);
+    case R_Y_LSB: return (uint8_t)(m->ly & 0xFFu);
+    case R_Y_MSB: return (uint8_t)(m->ly >> 8);
+    case R_Z_LSB: return (uint8_t)(m->lz & 0xFFu);
+    case R_Z_MSB: return (uint8_t)(m->lz >> 8);
     case R_BUF_DATA:
         if (m->ring_count == 0u) {
             return 0;
         }
         return m->ring_byte == 0u ? (uint8_t)(m->ring[m->ring_head] >> 8)
                                   : (uint8_t)(m->ring[m->ring_head] & 0xFFu);
-    case R_TEMP_LSB:
-        return (uint8_t)(m->ltemp & 0xFFu);
-    case R_TEMP_MSB:
-        return (uint8_t)(m->ltemp >> 8);
-    case R_MODE:
-        return m->mode;
-    case R_BUF_COUNT:
-        return m->lcount;
-    case R_INT_STATUS:
-        return m->int_status;
-    case R_INT_MASK:
-        return m->int_mask;
-    case R_CTRL_DATA:
-        return m->unlocked && ind_valid(m, m->ctrl_sel) ? m->ind[m->ctrl_sel] : 0u;
-    default:
-        return 0;
+    case R_TEMP_LSB: return (uint8_t)(m->ltemp & 0xFFu);
+    case R_TEMP_MSB: return (uint8_t)(m->ltemp >> 8);
+    case R_MODE: return m->mode;
+    case R_BUF_COUNT: return m->lcount;
+    case R_INT_STATUS: return m->int_status;
+    case R_INT_MASK: return m->int_mask;
+    case R_CTRL_DATA: return m->unlocked && ind_valid(m, m->ctrl_sel) ? m->ind[m->ctrl_sel] : 0u;
+    default: return 0;
     }
 }
 
@@ -316,9 +298,7 @@ static uint8_t peek(const struct sim_sca3000 *m, uint8_t a)
 static void commit_read(struct sim_sca3000 *m, uint8_t a)
 {
     switch (a) {
-    case R_STATUS:
-        m->frame_error = false;
-        break;
+    case R_STATUS: m->frame_error = false; break;
     case R_INT_STATUS:
         m->int_status = 0;
         update_int_pin(m);
@@ -334,8 +314,7 @@ static void commit_read(struct sim_sca3000 *m, uint8_t a)
             }
         }
         break;
-    default:
-        break;
+    default: break;
     }
 }
 
@@ -376,17 +355,14 @@ static void write_indirect(struct sim_sca3000 *m, uint8_t v, uint64_t t)
         break;
     case I_MD_Y_TH:
     case I_MD_X_TH:
-    case I_MD_Z_TH:
-        break;
+    case I_MD_Z_TH: break;
     case I_OUT_CTRL:
         if ((v & OUT_CTRL_REQUIRED) != OUT_CTRL_REQUIRED) {
             lock_up(m, "OUT_CTRL bits [7:5] cleared: the part stops working", t);
             return;
         }
         break;
-    default:
-        lock_up(m, "CTRL_DATA write to a reserved indirect register", t);
-        return;
+    default: lock_up(m, "CTRL_DATA write to a reserved indirect register", t); return;
     }
     m->ind[sel] = v;
 }
@@ -426,19 +402,14 @@ static void apply_write(struct sim_sca3000 *m, uint8_t a, uint8_t v, uint64_t t)
 {
     m->writes_applied++;
     switch (a) {
-    case R_MODE:
-        write_mode(m, v, t);
-        break;
-    case R_I2C_RD_SEL:
-        break; /* I2C only; harmless over SPI */
+    case R_MODE: write_mode(m, v, t); break;
+    case R_I2C_RD_SEL: break; /* I2C only; harmless over SPI */
     case R_CTRL_SEL:
         if (m->unlocked) {
             m->ctrl_sel = v;
         }
         break;
-    case R_UNLOCK:
-        write_unlock(m, v);
-        break;
+    case R_UNLOCK: write_unlock(m, v); break;
     case R_INT_MASK:
         if (((v ^ m->int_mask) & INT_MASK_PROTECT) != 0u) {
             lock_up(m, "INT_MASK protected bits (0x1C) changed", t);
@@ -447,9 +418,7 @@ static void apply_write(struct sim_sca3000 *m, uint8_t a, uint8_t v, uint64_t t)
         m->int_mask = v;
         update_int_pin(m);
         break;
-    case R_CTRL_DATA:
-        write_indirect(m, v, t);
-        break;
+    case R_CTRL_DATA: write_indirect(m, v, t); break;
     case R_REVID:
     case R_STATUS:
     case R_X_LSB:
@@ -462,12 +431,8 @@ static void apply_write(struct sim_sca3000 *m, uint8_t a, uint8_t v, uint64_t t)
     case R_TEMP_LSB:
     case R_TEMP_MSB:
     case R_BUF_COUNT:
-    case R_INT_STATUS:
-        protocol(m, "write to a read-only register (ignored)", t);
-        break;
-    default:
-        lock_up(m, "write to a reserved register", t);
-        break;
+    case R_INT_STATUS: protocol(m, "write to a read-only register (ignored)", t); break;
+    default: lock_up(m, "write to a reserved register", t); break;
     }
 }
 

@@ -80,8 +80,8 @@ int sim_allan_compute(const double *y, size_t n, double dt_s, const struct sim_a
             min_clusters = opts->min_clusters;
         }
     }
-    if (n < 4u || !(dt_s > 0.0) || !isfinite(dt_s) || per_decade > 100u ||
-        !(min_clusters >= 2.0) || !isfinite(min_clusters)) {
+    if (n < 4u || !(dt_s > 0.0) || !isfinite(dt_s) || per_decade > 100u || !(min_clusters >= 2.0) ||
+        !isfinite(min_clusters)) {
         return INC_ERR_INVAL;
     }
     for (k = 0; k < n; k++) {

@@ -172,7 +172,8 @@ int sim_allan_read_csv(FILE *f, unsigned col, int time_col, double scale, double
         double v, t = 0.0;
         lineno++;
         if (got != SIM_LINE_OK) {
-            err = got == SIM_LINE_IO ? INC_ERR_IO : INC_ERR_FORMAT; /* too long, NUL byte, read error */
+            err = got == SIM_LINE_IO ? INC_ERR_IO
+                                     : INC_ERR_FORMAT; /* too long, NUL byte, read error */
             break;
         }
         trim_end(line);
@@ -185,8 +186,8 @@ int sim_allan_read_csv(FILE *f, unsigned col, int time_col, double scale, double
                 continue;
             }
         }
-        if (field(line, col, &v) != 1 || (time_col >= 0 && field(line, (unsigned)time_col, &t) != 1) ||
-            !isfinite(v * scale)) {
+        if (field(line, col, &v) != 1 ||
+            (time_col >= 0 && field(line, (unsigned)time_col, &t) != 1) || !isfinite(v * scale)) {
             err = INC_ERR_FORMAT;
             break;
         }
@@ -302,8 +303,8 @@ int sim_allan_write_svg(FILE *f, const struct sim_allan_point *pts, size_t count
     }
     for (i = 0; i < count; i++) {
         if (pts[i].adev > 0.0 && pts[i].tau_s > 0.0) {
-            vmin = fmin(vmin, pts[i].adev - pts[i].err > 0.0 ? pts[i].adev - pts[i].err
-                                                              : pts[i].adev);
+            vmin = fmin(vmin,
+                        pts[i].adev - pts[i].err > 0.0 ? pts[i].adev - pts[i].err : pts[i].adev);
             vmax = fmax(vmax, pts[i].adev + pts[i].err);
             tmin = fmin(tmin, pts[i].tau_s);
             tmax = fmax(tmax, pts[i].tau_s);
@@ -326,8 +327,10 @@ int sim_allan_write_svg(FILE *f, const struct sim_allan_point *pts, size_t count
     if (fr.y1 <= fr.y0) {
         fr.y1 = fr.y0 + 1.0;
     }
-    fprintf(f, "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"%.0f\" "
-               "font-family=\"sans-serif\" font-size=\"12\">\n", SVG_W, SVG_H);
+    fprintf(f,
+            "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"%.0f\" "
+            "font-family=\"sans-serif\" font-size=\"12\">\n",
+            SVG_W, SVG_H);
     fprintf(f, "<rect width=\"100%%\" height=\"100%%\" fill=\"white\"/>\n");
     /* grid: decades solid, 2..9 light */
     for (d = (int)fr.x0; d <= (int)fr.x1; d++) {
@@ -352,8 +355,10 @@ int sim_allan_write_svg(FILE *f, const struct sim_allan_point *pts, size_t count
     }
     fprintf(f, "<text x=\"%.1f\" y=\"%.1f\" text-anchor=\"middle\">averaging time tau (s)</text>\n",
             (SVG_L + SVG_W - SVG_R) / 2.0, SVG_H - 15.0);
-    fprintf(f, "<text transform=\"translate(22 %.1f) rotate(-90)\" text-anchor=\"middle\">"
-               "Allan deviation (", (SVG_T + SVG_H - SVG_B) / 2.0);
+    fprintf(f,
+            "<text transform=\"translate(22 %.1f) rotate(-90)\" text-anchor=\"middle\">"
+            "Allan deviation (",
+            (SVG_T + SVG_H - SVG_B) / 2.0);
     xml_text(f, unit != NULL ? unit : "unit");
     fprintf(f, ")</text>\n<text x=\"%.1f\" y=\"24\" text-anchor=\"middle\" font-size=\"15\">",
             (SVG_L + SVG_W - SVG_R) / 2.0);
@@ -386,7 +391,8 @@ int sim_allan_write_svg(FILE *f, const struct sim_allan_point *pts, size_t count
     for (i = 0; i < count; i++) {
         if (pts[i].adev > 0.0 && pts[i].adev - pts[i].err > 0.0) {
             const double x = px(&fr, pts[i].tau_s);
-            fprintf(f, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#1f77b4\"/>\n",
+            fprintf(f,
+                    "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#1f77b4\"/>\n",
                     x, py(&fr, pts[i].adev - pts[i].err), x, py(&fr, pts[i].adev + pts[i].err));
         }
     }
@@ -395,21 +401,27 @@ int sim_allan_write_svg(FILE *f, const struct sim_allan_point *pts, size_t count
         if (r->arw_valid) {
             fprintf(f, "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"5\" fill=\"none\" stroke=\"black\"/>\n",
                     px(&fr, 1.0), py(&fr, r->arw));
-            fprintf(f, "<text x=\"%.1f\" y=\"%.1f\" text-anchor=\"end\">ARW (tau = 1 s): %.4g %s"
-                       "*sqrt(s) = %.4g %s*sqrt(h)/s</text>\n", SVG_W - SVG_R - 8.0, ty, r->arw,
-                    unit != NULL ? unit : "", r->arw * 60.0, unit != NULL ? unit : "");
+            fprintf(f,
+                    "<text x=\"%.1f\" y=\"%.1f\" text-anchor=\"end\">ARW (tau = 1 s): %.4g %s"
+                    "*sqrt(s) = %.4g %s*sqrt(h)/s</text>\n",
+                    SVG_W - SVG_R - 8.0, ty, r->arw, unit != NULL ? unit : "", r->arw * 60.0,
+                    unit != NULL ? unit : "");
             ty += 16.0;
         }
         fprintf(f, "<rect x=\"%.1f\" y=\"%.1f\" width=\"8\" height=\"8\" fill=\"black\"/>\n",
                 px(&fr, r->tau_min_s) - 4.0, py(&fr, r->adev_min) - 4.0);
-        fprintf(f, "<text x=\"%.1f\" y=\"%.1f\" text-anchor=\"end\">minimum %.4g %s at %.4g s; "
-                   "bias instability (min / 0.664): %.4g %s%s</text>\n", SVG_W - SVG_R - 8.0, ty,
-                r->adev_min, unit != NULL ? unit : "", r->tau_min_s, r->bias_instability,
-                unit != NULL ? unit : "", r->min_interior ? "" : " (minimum at the curve's end)");
+        fprintf(f,
+                "<text x=\"%.1f\" y=\"%.1f\" text-anchor=\"end\">minimum %.4g %s at %.4g s; "
+                "bias instability (min / 0.664): %.4g %s%s</text>\n",
+                SVG_W - SVG_R - 8.0, ty, r->adev_min, unit != NULL ? unit : "", r->tau_min_s,
+                r->bias_instability, unit != NULL ? unit : "",
+                r->min_interior ? "" : " (minimum at the curve's end)");
         ty += 16.0;
         if (theory != NULL) {
-            fprintf(f, "<text x=\"%.1f\" y=\"%.1f\" text-anchor=\"end\" fill=\"#d62728\">dashed: "
-                       "configured model (analytic)</text>\n", SVG_W - SVG_R - 8.0, ty);
+            fprintf(f,
+                    "<text x=\"%.1f\" y=\"%.1f\" text-anchor=\"end\" fill=\"#d62728\">dashed: "
+                    "configured model (analytic)</text>\n",
+                    SVG_W - SVG_R - 8.0, ty);
         }
     }
     fprintf(f, "</svg>\n");
@@ -422,12 +434,13 @@ int sim_allan_write_gnuplot(FILE *f, const char *data_csv, const char *png_path,
     if (f == NULL || data_csv == NULL || png_path == NULL) {
         return INC_ERR_NULL;
     }
-    fprintf(f, "# gnuplot script written by the allan tool (Debian: apt-get install gnuplot-nox)\n"
-               "set terminal pngcairo size 900,600\nset output '%s'\n"
-               "set datafile separator ','\nset logscale xy\nset grid xtics ytics mxtics mytics\n"
-               "set xlabel 'averaging time tau (s)'\nset ylabel 'Allan deviation (%s)'\n"
-               "set title '%s'\n"
-               "plot '%s' every ::1 using 1:2:3 with yerrorlines title 'overlapping ADEV'",
+    fprintf(f,
+            "# gnuplot script written by the allan tool (Debian: apt-get install gnuplot-nox)\n"
+            "set terminal pngcairo size 900,600\nset output '%s'\n"
+            "set datafile separator ','\nset logscale xy\nset grid xtics ytics mxtics mytics\n"
+            "set xlabel 'averaging time tau (s)'\nset ylabel 'Allan deviation (%s)'\n"
+            "set title '%s'\n"
+            "plot '%s' every ::1 using 1:2:3 with yerrorlines title 'overlapping ADEV'",
             png_path, unit != NULL ? unit : "", title != NULL ? title : "Allan deviation",
             data_csv);
     if (has_theory) {

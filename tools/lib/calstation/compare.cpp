@@ -9,9 +9,11 @@
 #include <cstdio>
 #include <map>
 
-namespace calstation {
+namespace calstation
+{
 
-std::string compare_part(const SimPart &part, const CompareConfig &cfg, std::vector<CompareAxis> &out)
+std::string compare_part(const SimPart &part, const CompareConfig &cfg,
+                         std::vector<CompareAxis> &out)
 {
     SimConfig sc;
     sc.part = part;
@@ -36,7 +38,8 @@ std::string compare_part(const SimPart &part, const CompareConfig &cfg, std::vec
         ca.part = name;
         ca.axis = a;
         for (int k = -1; k < TemperatureFits::kKinds; k++) {
-            const TFit *fb = k >= 0 ? &tf.bias[k][a] : nullptr, *fs = k >= 0 ? &tf.scale[k][a] : nullptr;
+            const TFit *fb = k >= 0 ? &tf.bias[k][a] : nullptr,
+                       *fs = k >= 0 ? &tf.scale[k][a] : nullptr;
             CompareCell &b = ca.bias[k + 1], &s = ca.scale[k + 1];
             b.ok = !fb || fb->ok;
             s.ok = !fs || fs->ok;
@@ -54,7 +57,8 @@ std::string compare_part(const SimPart &part, const CompareConfig &cfg, std::vec
         // calstation fit --out), B(T) = offset + tbias(T), K(T) = gain * (1 + tscale(T)).
         {
             const TFit &fb = tf.bias[4][a], &fs = tf.scale[4][a];
-            CompareCell &b = ca.bias[CompareAxis::kCells - 1], &s = ca.scale[CompareAxis::kCells - 1];
+            CompareCell &b = ca.bias[CompareAxis::kCells - 1],
+                        &s = ca.scale[CompareAxis::kCells - 1];
             b.ok = s.ok = fb.ok && fs.ok;
             if (b.ok) {
                 CalResult c;
@@ -72,15 +76,18 @@ std::string compare_part(const SimPart &part, const CompareConfig &cfg, std::vec
                 if (b.ok) {
                     const auto fw_b = [&r, a](double t) {
                         int32_t y = 0;
-                        (void)cal_tmodel_eval(&r.acc_tbias[a], static_cast<fx_q16_t>(std::lround(t * 65536.0)), &y);
+                        (void)cal_tmodel_eval(&r.acc_tbias[a],
+                                              static_cast<fx_q16_t>(std::lround(t * 65536.0)), &y);
                         return (r.acc_offset[a] + y) / 65536.0;
                     };
                     const auto fw_k = [&r, a](double t) {
                         int32_t y = 0;
-                        (void)cal_tmodel_eval(&r.acc_tscale[a], static_cast<fx_q16_t>(std::lround(t * 65536.0)), &y);
+                        (void)cal_tmodel_eval(&r.acc_tscale[a],
+                                              static_cast<fx_q16_t>(std::lround(t * 65536.0)), &y);
                         return r.acc_gain[a] / 1073741824.0 * (1.0 + y / 1073741824.0);
                     };
-                    const Spread in = spread_fn(cb, cs, a, fw_b, fw_k), ho = spread_fn(vb, vs, a, fw_b, fw_k);
+                    const Spread in = spread_fn(cb, cs, a, fw_b, fw_k),
+                                 ho = spread_fn(vb, vs, a, fw_b, fw_k);
                     b.in_sample = in.bias_mean_mg;
                     b.in_all = in.bias_all_mg;
                     b.held_out = ho.bias_mean_mg;
@@ -101,10 +108,13 @@ std::string format_compare(const std::vector<CompareAxis> &rows)
     std::string o;
     char b[256];
     for (int q = 0; q < 2; q++) {
-        o += q ? "\nScale factor, (Kmax-Kmin)/Kmean*1e6/span in ppm/degC (paper: 151.6 -> 45.89 linear -> 11.8 Lorentz)\n"
-               : "Bias, Bmax-Bmin in mg (paper: 14 -> 6.91 linear -> 1.3 Lorentz)\n";
-        o += "worst axis per part; in-sample soak-point means (paper's definition) / every soak / held out at -15..55 degC\n\n";
-        o += "| part | raw | linear | 3-point parabola | Lorentz | PWL (10 degC knots) | Lorentz + cubic (best) | best, firmware fixed point |\n";
+        o +=
+            q ? "\nScale factor, (Kmax-Kmin)/Kmean*1e6/span in ppm/degC (paper: 151.6 -> 45.89 linear -> 11.8 Lorentz)\n"
+              : "Bias, Bmax-Bmin in mg (paper: 14 -> 6.91 linear -> 1.3 Lorentz)\n";
+        o +=
+            "worst axis per part; in-sample soak-point means (paper's definition) / every soak / held out at -15..55 degC\n\n";
+        o +=
+            "| part | raw | linear | 3-point parabola | Lorentz | PWL (10 degC knots) | Lorentz + cubic (best) | best, firmware fixed point |\n";
         o += "|---|---|---|---|---|---|---|---|\n";
         std::map<std::string, std::array<CompareCell, CompareAxis::kCells>> worst;
         std::vector<std::string> order;
@@ -127,23 +137,27 @@ std::string format_compare(const std::vector<CompareAxis> &rows)
                     o += " n/a |";
                     continue;
                 }
-                std::snprintf(b, sizeof b, q ? " %.2f / %.2f / %.2f |" : " %.3f / %.3f / %.3f |", c.in_sample, c.in_all, c.held_out);
+                std::snprintf(b, sizeof b, q ? " %.2f / %.2f / %.2f |" : " %.3f / %.3f / %.3f |",
+                              c.in_sample, c.in_all, c.held_out);
                 o += b;
             }
             o += "\n";
         }
     }
-    o += "\nPer axis (in-sample means / held out):\n\n| part | axis | quantity | raw | linear | 3-point | Lorentz | PWL | Lorentz + cubic | firmware |\n|---|---|---|---|---|---|---|---|---|---|\n";
+    o +=
+        "\nPer axis (in-sample means / held out):\n\n| part | axis | quantity | raw | linear | 3-point | Lorentz | PWL | Lorentz + cubic | firmware |\n|---|---|---|---|---|---|---|---|---|---|\n";
     for (const auto &r : rows) {
         for (int q = 0; q < 2; q++) {
-            std::snprintf(b, sizeof b, "| %s | %s | %s |", r.part.c_str(), ax[r.axis], q ? "scale ppm/degC" : "bias mg");
+            std::snprintf(b, sizeof b, "| %s | %s | %s |", r.part.c_str(), ax[r.axis],
+                          q ? "scale ppm/degC" : "bias mg");
             o += b;
             for (const auto &c : (q ? r.scale : r.bias)) {
                 if (!c.ok) {
                     o += " n/a |";
                     continue;
                 }
-                std::snprintf(b, sizeof b, q ? " %.2f / %.2f |" : " %.3f / %.3f |", c.in_sample, c.held_out);
+                std::snprintf(b, sizeof b, q ? " %.2f / %.2f |" : " %.3f / %.3f |", c.in_sample,
+                              c.held_out);
                 o += b;
             }
             o += "\n";

@@ -9,20 +9,24 @@
 #include <fstream>
 #include <sstream>
 
-namespace calstation {
+namespace calstation
+{
 
 const char *const kCsvHeader = "block,kind,temp_c,ux,uy,uz,angle_deg,dur_s,n,x,y,z";
 
-namespace {
+namespace
+{
 
-const char *const kCols[12] = {"block", "kind", "temp_c", "ux", "uy", "uz",
-                               "angle_deg", "dur_s", "n", "x", "y", "z"};
+const char *const kCols[12] = {"block",     "kind",  "temp_c", "ux", "uy", "uz",
+                               "angle_deg", "dur_s", "n",      "x",  "y",  "z"};
 
 std::string trim(const std::string &s)
 {
     size_t a = 0, b = s.size();
-    while (a < b && (s[a] == ' ' || s[a] == '\t' || s[a] == '\r')) a++;
-    while (b > a && (s[b - 1] == ' ' || s[b - 1] == '\t' || s[b - 1] == '\r')) b--;
+    while (a < b && (s[a] == ' ' || s[a] == '\t' || s[a] == '\r'))
+        a++;
+    while (b > a && (s[b - 1] == ' ' || s[b - 1] == '\t' || s[b - 1] == '\r'))
+        b--;
     return s.substr(a, b - a);
 }
 
@@ -111,7 +115,8 @@ std::string parse_setting(const std::string &body, int line, Station &st)
     std::string why;
     double d = 0.0;
     if (key == "format") {
-        if (val != "1") return at(line) + "unsupported station file format '" + val + "' (this tool reads 1)";
+        if (val != "1")
+            return at(line) + "unsupported station file format '" + val + "' (this tool reads 1)";
         return "";
     }
     if (key == "acc_lsb_g" || key == "gyro_lsb_dps") {
@@ -128,7 +133,9 @@ std::string parse_setting(const std::string &body, int line, Station &st)
     }
     if (key == "binding") {
         const auto f = split(val, ',');
-        if (f.size() != 6) return at(line) + "binding needs 6 integers (family,product,revision,serial,lot_id1,lot_id2)";
+        if (f.size() != 6)
+            return at(line) +
+                   "binding needs 6 integers (family,product,revision,serial,lot_id1,lot_id2)";
         for (size_t i = 0; i < 6; i++) {
             long v = 0;
             if (!to_long(f[i], v, why, true) || v < 0 || v > 0xFFFFFFFFL) {
@@ -154,12 +161,16 @@ std::string parse_row(const std::vector<std::string> &f, int line, Row &r)
     r.line = line;
     if (!to_long(f[0], r.block, why, false)) return col_at(line, 0) + why;
     if (r.block < 0) return col_at(line, 0) + "block id must be >= 0";
-    if (f[1] == "acc") r.kind = RowKind::Acc;
-    else if (f[1] == "gyro_still") r.kind = RowKind::GyroStill;
-    else if (f[1] == "gyro_turn") r.kind = RowKind::GyroTurn;
-    else return col_at(line, 1) + "unknown kind '" + f[1] + "' (acc, gyro_still, gyro_turn)";
-    double *dst[10] = {&r.temp_c, &r.u[0], &r.u[1], &r.u[2], &r.angle_deg, &r.dur_s,
-                       nullptr, &r.v[0], &r.v[1], &r.v[2]};
+    if (f[1] == "acc")
+        r.kind = RowKind::Acc;
+    else if (f[1] == "gyro_still")
+        r.kind = RowKind::GyroStill;
+    else if (f[1] == "gyro_turn")
+        r.kind = RowKind::GyroTurn;
+    else
+        return col_at(line, 1) + "unknown kind '" + f[1] + "' (acc, gyro_still, gyro_turn)";
+    double *dst[10] = {&r.temp_c, &r.u[0], &r.u[1], &r.u[2], &r.angle_deg,
+                       &r.dur_s,  nullptr, &r.v[0], &r.v[1], &r.v[2]};
     for (int c = 2; c < 12; c++) {
         if (c == 8) {
             if (!to_long(f[c], r.n, why, false)) return col_at(line, c) + why;
@@ -177,8 +188,10 @@ std::string parse_row(const std::vector<std::string> &f, int line, Row &r)
                " g; a station position applies gravity only (1 g)";
     }
     if (r.kind == RowKind::GyroTurn) {
-        if (un < 0.99 || un > 1.01) return at(line) + "the turn axis (ux,uy,uz) must be a unit vector";
-        if (!(std::fabs(r.angle_deg) >= 90.0)) return col_at(line, 6) + "a turn must be at least 90 degrees";
+        if (un < 0.99 || un > 1.01)
+            return at(line) + "the turn axis (ux,uy,uz) must be a unit vector";
+        if (!(std::fabs(r.angle_deg) >= 90.0))
+            return col_at(line, 6) + "a turn must be at least 90 degrees";
         if (!(r.dur_s > 0.0)) return col_at(line, 7) + "the turn duration must be > 0 s";
     }
     return "";
@@ -207,7 +220,8 @@ std::string parse_station(const std::string &text, Station &st)
         if (!have_header) {
             if (s != kCsvHeader) {
                 std::string norm;
-                for (size_t i = 0; i < f.size(); i++) norm += (i ? "," : "") + f[i];
+                for (size_t i = 0; i < f.size(); i++)
+                    norm += (i ? "," : "") + f[i];
                 if (norm != kCsvHeader) {
                     return at(line) + "expected the column header '" + kCsvHeader + "'";
                 }
@@ -216,7 +230,8 @@ std::string parse_station(const std::string &text, Station &st)
             continue;
         }
         if (f.size() != 12) {
-            return at(line) + std::to_string(f.size()) + " fields, expected 12 (" + kCsvHeader + ")";
+            return at(line) + std::to_string(f.size()) + " fields, expected 12 (" + kCsvHeader +
+                   ")";
         }
         Row r;
         const std::string e = parse_row(f, line, r);
@@ -227,9 +242,11 @@ std::string parse_station(const std::string &text, Station &st)
         return "empty station file: no column header and no measurement rows";
     }
     if (!have_header) return "no column header line ('" + std::string(kCsvHeader) + "')";
-    if (st.rows.empty()) return "no measurement rows after the header (line " + std::to_string(line) + ")";
+    if (st.rows.empty())
+        return "no measurement rows after the header (line " + std::to_string(line) + ")";
     if (!(st.acc_lsb_g > 0.0)) return "missing setting '#@ acc_lsb_g=<g per count>'";
-    const auto g = std::find_if(st.rows.begin(), st.rows.end(), [](const Row &r) { return r.kind != RowKind::Acc; });
+    const auto g = std::find_if(st.rows.begin(), st.rows.end(),
+                                [](const Row &r) { return r.kind != RowKind::Acc; });
     if (g != st.rows.end() && !(st.gyro_lsb_dps > 0.0)) {
         return at(g->line) + "gyro row but no setting '#@ gyro_lsb_dps=<deg/s per count>'";
     }
@@ -248,7 +265,8 @@ std::string read_station_file(const std::string &path, Station &st)
 
 std::string format_station(const Station &st)
 {
-    std::string out = "# Inclino calibration-station measurements (docs/calibration.md)\n#@ format=1\n";
+    std::string out =
+        "# Inclino calibration-station measurements (docs/calibration.md)\n#@ format=1\n";
     char buf[512];
     std::snprintf(buf, sizeof buf, "#@ acc_lsb_g=%.9g\n", st.acc_lsb_g);
     out += buf;
@@ -259,14 +277,16 @@ std::string format_station(const Station &st)
     std::snprintf(buf, sizeof buf, "#@ t_ref_c=%.6g\n", st.t_ref_c);
     out += buf;
     if (st.have_binding) {
-        std::snprintf(buf, sizeof buf, "#@ binding=%u,%u,%u,%u,%u,%u\n", st.binding[0], st.binding[1],
-                      st.binding[2], st.binding[3], st.binding[4], st.binding[5]);
+        std::snprintf(buf, sizeof buf, "#@ binding=%u,%u,%u,%u,%u,%u\n", st.binding[0],
+                      st.binding[1], st.binding[2], st.binding[3], st.binding[4], st.binding[5]);
         out += buf;
     }
     out += kCsvHeader;
     out += '\n';
     for (const auto &r : st.rows) {
-        const char *k = r.kind == RowKind::Acc ? "acc" : (r.kind == RowKind::GyroStill ? "gyro_still" : "gyro_turn");
+        const char *k = r.kind == RowKind::Acc
+                            ? "acc"
+                            : (r.kind == RowKind::GyroStill ? "gyro_still" : "gyro_turn");
         std::snprintf(buf, sizeof buf, "%ld,%s,%.4f,%.9f,%.9f,%.9f,%.6f,%.6f,%ld,%.5f,%.5f,%.5f\n",
                       r.block, k, r.temp_c, r.u[0], r.u[1], r.u[2], r.angle_deg, r.dur_s, r.n,
                       r.v[0], r.v[1], r.v[2]);

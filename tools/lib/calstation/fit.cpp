@@ -11,9 +11,11 @@
 #include <numeric>
 #include <set>
 
-namespace calstation {
+namespace calstation
+{
 
-namespace {
+namespace
+{
 
 const char *const kAxis[3] = {"x", "y", "z"};
 
@@ -31,8 +33,10 @@ constexpr double kSoakGapC = 2.0;
 std::string num(double a, int prec)
 {
     char b[64];
-    if (prec >= 0) std::snprintf(b, sizeof b, "%.*g", prec, a);
-    else std::snprintf(b, sizeof b, "%.*f", -prec, a);
+    if (prec >= 0)
+        std::snprintf(b, sizeof b, "%.*g", prec, a);
+    else
+        std::snprintf(b, sizeof b, "%.*f", -prec, a);
     return b;
 }
 
@@ -55,17 +59,20 @@ std::string check_tmodel(const TModel &m, double ylim, const std::string &what)
             continue; // the Lorentz width and centre: their own limits below
         }
         if (!(std::fabs(m.p[k]) <= ylim)) {
-            return bad("parameter p" + std::to_string(k) + " = " + num(m.p[k], 6) +
-                       " (limit +-" + num(ylim, 6) + ")");
+            return bad("parameter p" + std::to_string(k) + " = " + num(m.p[k], 6) + " (limit +-" +
+                       num(ylim, 6) + ")");
         }
     }
     if (m.kind == TKind::Lorentz || m.kind == TKind::LorentzCubic) {
-        if (!(m.p[2] >= 1.0 && m.p[2] <= 400.0)) return bad("Lorentz width " + num(m.p[2], 6) + " degC (limit 1..400)");
-        if (!(m.p[3] >= -100.0 && m.p[3] <= 200.0)) return bad("Lorentz centre " + num(m.p[3], 6) + " degC (limit -100..200)");
+        if (!(m.p[2] >= 1.0 && m.p[2] <= 400.0))
+            return bad("Lorentz width " + num(m.p[2], 6) + " degC (limit 1..400)");
+        if (!(m.p[3] >= -100.0 && m.p[3] <= 200.0))
+            return bad("Lorentz centre " + num(m.p[3], 6) + " degC (limit -100..200)");
     }
     if (m.kind != TKind::Lorentz) {
         if (!(m.t_ref >= -100.0 && m.t_ref <= 200.0)) return bad("t_ref " + num(m.t_ref, 6));
-        if (!(m.t_span >= 1.0 && m.t_span <= 200.0)) return bad("t_span " + num(m.t_span, 6) + " degC (limit 1..200)");
+        if (!(m.t_span >= 1.0 && m.t_span <= 200.0))
+            return bad("t_span " + num(m.t_span, 6) + " degC (limit 1..200)");
     }
     return "";
 }
@@ -84,28 +91,40 @@ TModel to_deviation(const TModel &m, double ref, bool relative)
     case TKind::Lorentz: lin = {0, 1}; break;
     case TKind::LorentzCubic: lin = {0, 1, 4, 5, 6}; break;
     case TKind::Pwl:
-        for (int k = 0; k < m.n; k++) lin.push_back(k);
+        for (int k = 0; k < m.n; k++)
+            lin.push_back(k);
         break;
     }
     // The constant part: p0 for every kind but PWL, where every knot carries it.
     const bool pwl = m.kind == TKind::Pwl;
     if (relative) {
-        for (int k : lin) d.p[k] /= ref;
-        if (pwl) for (int k = 0; k < m.n; k++) d.p[k] -= 1.0;
-        else d.p[0] -= 1.0;
+        for (int k : lin)
+            d.p[k] /= ref;
+        if (pwl)
+            for (int k = 0; k < m.n; k++)
+                d.p[k] -= 1.0;
+        else
+            d.p[0] -= 1.0;
     } else {
-        if (pwl) for (int k = 0; k < m.n; k++) d.p[k] -= ref;
-        else d.p[0] -= ref;
+        if (pwl)
+            for (int k = 0; k < m.n; k++)
+                d.p[k] -= ref;
+        else
+            d.p[0] -= ref;
     }
     return d;
 }
 
 bool parse_tchoice(const std::string &s, TChoice &c)
 {
-    static const std::map<std::string, TChoice> m = {
-        {"best", TChoice::Best},       {"none", TChoice::None},   {"linear", TChoice::Linear},
-        {"parabola", TChoice::Parabola}, {"three-point", TChoice::Parabola},
-        {"lorentz", TChoice::Lorentz}, {"pwl", TChoice::Pwl},     {"lorentz-cubic", TChoice::LorentzCubic}};
+    static const std::map<std::string, TChoice> m = {{"best", TChoice::Best},
+                                                     {"none", TChoice::None},
+                                                     {"linear", TChoice::Linear},
+                                                     {"parabola", TChoice::Parabola},
+                                                     {"three-point", TChoice::Parabola},
+                                                     {"lorentz", TChoice::Lorentz},
+                                                     {"pwl", TChoice::Pwl},
+                                                     {"lorentz-cubic", TChoice::LorentzCubic}};
     const auto it = m.find(s);
     if (it == m.end()) return false;
     c = it->second;
@@ -147,8 +166,16 @@ std::string block_measurements(const Station &st, std::vector<BlockMeas> &out)
             std::vector<double> pos, neg;
             int lp = 0, ln = 0;
             for (const Row *r : kv.second) {
-                if (is_face(*r, a, +1)) { pos.push_back(r->v[a] * st.acc_lsb_g); lp = r->line; temps.push_back(r->temp_c); }
-                if (is_face(*r, a, -1)) { neg.push_back(r->v[a] * st.acc_lsb_g); ln = r->line; temps.push_back(r->temp_c); }
+                if (is_face(*r, a, +1)) {
+                    pos.push_back(r->v[a] * st.acc_lsb_g);
+                    lp = r->line;
+                    temps.push_back(r->temp_c);
+                }
+                if (is_face(*r, a, -1)) {
+                    neg.push_back(r->v[a] * st.acc_lsb_g);
+                    ln = r->line;
+                    temps.push_back(r->temp_c);
+                }
             }
             if (pos.empty() || neg.empty()) continue;
             const double ap = mean_of(pos), an = mean_of(neg);
@@ -176,7 +203,8 @@ std::string block_measurements(const Station &st, std::vector<BlockMeas> &out)
 std::vector<std::vector<size_t>> soak_points(const std::vector<BlockMeas> &b)
 {
     std::vector<size_t> idx(b.size());
-    for (size_t i = 0; i < idx.size(); i++) idx[i] = i;
+    for (size_t i = 0; i < idx.size(); i++)
+        idx[i] = i;
     std::sort(idx.begin(), idx.end(), [&](size_t x, size_t y) { return b[x].t < b[y].t; });
     std::vector<std::vector<size_t>> s;
     for (size_t k = 0; k < idx.size(); k++) {
@@ -186,15 +214,18 @@ std::vector<std::vector<size_t>> soak_points(const std::vector<BlockMeas> &b)
     return s;
 }
 
-Spread spread(const std::vector<BlockMeas> &b, const std::vector<std::vector<size_t>> &soaks,
-              int a, const TModel *bm, const TModel *sm)
+Spread spread(const std::vector<BlockMeas> &b, const std::vector<std::vector<size_t>> &soaks, int a,
+              const TModel *bm, const TModel *sm)
 {
-    return spread_fn(b, soaks, a, bm ? std::function<double(double)>([bm](double t) { return bm->eval(t); }) : nullptr,
-                     sm ? std::function<double(double)>([sm](double t) { return sm->eval(t); }) : nullptr);
+    return spread_fn(
+        b, soaks, a,
+        bm ? std::function<double(double)>([bm](double t) { return bm->eval(t); }) : nullptr,
+        sm ? std::function<double(double)>([sm](double t) { return sm->eval(t); }) : nullptr);
 }
 
-Spread spread_fn(const std::vector<BlockMeas> &b, const std::vector<std::vector<size_t>> &soaks, int a,
-                 const std::function<double(double)> &bm, const std::function<double(double)> &sm)
+Spread spread_fn(const std::vector<BlockMeas> &b, const std::vector<std::vector<size_t>> &soaks,
+                 int a, const std::function<double(double)> &bm,
+                 const std::function<double(double)> &sm)
 {
     Spread r;
     double blo = 1e300, bhi = -1e300, mlo = 1e300, mhi = -1e300;
@@ -294,11 +325,13 @@ TemperatureFits fit_temperature(const std::vector<BlockMeas> &b,
         // extra ambient point), at most kTParams knots.
         if (bmean.size() >= 2) {
             std::vector<double> d;
-            for (size_t i = 1; i < bmean.size(); i++) d.push_back(bmean[i].t - bmean[i - 1].t);
+            for (size_t i = 1; i < bmean.size(); i++)
+                d.push_back(bmean[i].t - bmean[i - 1].t);
             std::sort(d.begin(), d.end());
             const double t0 = bmean.front().t, range = bmean.back().t - t0;
             const double med = d[d.size() / 2];
-            const int n = static_cast<int>(std::clamp<long>(std::lround(range / med) + 1, 2, kTParams));
+            const int n = static_cast<int>(
+                std::clamp<long>(std::lround(range / med) + 1, 2, kTParams));
             const double dt = range / (n - 1);
             tf.bias[3][a] = fit_pwl(bp, t0, dt, n);
             tf.scale[3][a] = fit_pwl(sp, t0, dt, n);
@@ -337,29 +370,38 @@ std::array<double, 3> apply_double(const CalResult &c, const std::array<double, 
         n[i] = v + q[0] + x * (q[1] + x * (q[2] + x * q[3]));
     }
     for (int i = 0; i < 3; i++) {
-        out[i] = c.acc_misalign[i][0] * n[0] + c.acc_misalign[i][1] * n[1] + c.acc_misalign[i][2] * n[2];
+        out[i] = c.acc_misalign[i][0] * n[0] + c.acc_misalign[i][1] * n[1] +
+                 c.acc_misalign[i][2] * n[2];
     }
     return out;
 }
 
-namespace {
+namespace
+{
 
-std::string static_report(const Station &st, const CalResult &flip, const CalResult &lin, const CalResult &c)
+std::string static_report(const Station &st, const CalResult &flip, const CalResult &lin,
+                          const CalResult &c)
 {
     // Static accuracy over the ambient-temperature rows, stage by stage.
-    struct Acc { double max = 0.0, ss = 0.0; int n = 0; };
+    struct Acc {
+        double max = 0.0, ss = 0.0;
+        int n = 0;
+    };
     Acc stage[3], tilt[3];
     CalResult diag = flip;
     for (int i = 0; i < 3; i++) {
-        for (int j = 0; j < 3; j++) diag.acc_misalign[i][j] = (i == j);
+        for (int j = 0; j < 3; j++)
+            diag.acc_misalign[i][j] = (i == j);
         diag.acc_nonlin[i] = {0, 0, 0, 0};
     }
     for (const auto &r : st.rows) {
         if (r.kind != RowKind::Acc || std::fabs(r.temp_c - st.t_ref_c) > kSoakGapC) continue;
-        const std::array<double, 3> raw = {r.v[0] * st.acc_lsb_g, r.v[1] * st.acc_lsb_g, r.v[2] * st.acc_lsb_g};
+        const std::array<double, 3> raw = {r.v[0] * st.acc_lsb_g, r.v[1] * st.acc_lsb_g,
+                                           r.v[2] * st.acc_lsb_g};
         const CalResult *cs[3] = {&diag, &lin, &c};
         bool is_tilt = false;
-        for (int a = 0; a < 3; a++) is_tilt |= std::fabs(r.u[a]) > 0.05 && std::fabs(r.u[a]) < 0.55;
+        for (int a = 0; a < 3; a++)
+            is_tilt |= std::fabs(r.u[a]) > 0.05 && std::fabs(r.u[a]) < 0.55;
         for (int s = 0; s < 3; s++) {
             const auto o = apply_double(*cs[s], raw, r.temp_c);
             for (int a = 0; a < 3; a++) {
@@ -376,12 +418,15 @@ std::string static_report(const Station &st, const CalResult &flip, const CalRes
         }
     }
     std::string out = "static accuracy at t_ref (ambient rows), |a_corrected - a_true| in mg:\n";
-    const char *names[3] = {"flip offset/gain + temp.", "+ misalignment (linear LS)", "+ nonlinearity (record)"};
+    const char *names[3] = {"flip offset/gain + temp.", "+ misalignment (linear LS)",
+                            "+ nonlinearity (record)"};
     for (int s = 0; s < 3; s++) {
         char b[200];
-        std::snprintf(b, sizeof b, "  %-26s all rows: max %7.3f rms %7.3f | within +-30 deg: max %7.3f rms %7.3f\n",
-                      names[s], stage[s].max, stage[s].n ? std::sqrt(stage[s].ss / stage[s].n) : 0.0,
-                      tilt[s].max, tilt[s].n ? std::sqrt(tilt[s].ss / tilt[s].n) : 0.0);
+        std::snprintf(
+            b, sizeof b,
+            "  %-26s all rows: max %7.3f rms %7.3f | within +-30 deg: max %7.3f rms %7.3f\n",
+            names[s], stage[s].max, stage[s].n ? std::sqrt(stage[s].ss / stage[s].n) : 0.0,
+            tilt[s].max, tilt[s].n ? std::sqrt(tilt[s].ss / tilt[s].n) : 0.0);
         out += b;
     }
     return out;
@@ -389,17 +434,20 @@ std::string static_report(const Station &st, const CalResult &flip, const CalRes
 
 } // namespace
 
-namespace {
+namespace
+{
 
 // Step 3 on r (offset, gain and temperature models already set): per element i, least squares
 // of P_i . f - c0 [- c2 v^2 - c3 v^3] = v over every acc row; folds c0 into the offset and sets
 // M = P^-1 and the nonlinearity terms (only with allow_nl and >= 5 distinct positions).
-std::string fit_elements(const Station &st, const std::vector<const Row *> &acc, CalResult &out, bool allow_nl)
+std::string fit_elements(const Station &st, const std::vector<const Row *> &acc, CalResult &out,
+                         bool allow_nl)
 {
     Eigen::Matrix3d p = Eigen::Matrix3d::Identity();
     for (int i = 0; i < 3; i++) {
         std::set<long> distinct;
-        for (const Row *r : acc) distinct.insert(std::lround(r->u[i] * 100.0));
+        for (const Row *r : acc)
+            distinct.insert(std::lround(r->u[i] * 100.0));
         const bool nl = allow_nl && distinct.size() >= 5;
         out.have_nonlin |= nl;
         const int ncol = nl ? 6 : 4;
@@ -427,7 +475,8 @@ std::string fit_elements(const Station &st, const std::vector<const Row *> &acc,
                    " (the acc rows must include at least four non-coplanar directions, e.g. the six faces)";
         }
         const Eigen::VectorXd c = qr.solve(y);
-        for (int j = 0; j < 3; j++) p(i, j) = c(j);
+        for (int j = 0; j < 3; j++)
+            p(i, j) = c(j);
         // c0 folded into the offset (n = v + c0 == (r - (b - k c0)) / k; k(T) differs from the
         // gain at t_ref by the tscale deviation, < 1e-2 * c0).
         out.acc_offset[i] -= out.acc_gain[i] * c(3);
@@ -438,7 +487,8 @@ std::string fit_elements(const Station &st, const std::vector<const Row *> &acc,
     }
     const Eigen::Matrix3d minv = p.inverse();
     for (int i = 0; i < 3; i++) {
-        for (int j = 0; j < 3; j++) out.acc_misalign[i][j] = minv(i, j);
+        for (int j = 0; j < 3; j++)
+            out.acc_misalign[i][j] = minv(i, j);
     }
 
     return "";
@@ -461,13 +511,15 @@ std::string fit_station(const Station &st, const FitOptions &opt, CalResult &out
     {
         bool all_equal = true;
         for (const Row *r : acc) {
-            for (int a = 0; a < 3; a++) all_equal &= std::fabs(r->u[a] - acc[0]->u[a]) < 1e-6;
+            for (int a = 0; a < 3; a++)
+                all_equal &= std::fabs(r->u[a] - acc[0]->u[a]) < 1e-6;
         }
         if (all_equal) {
             return "degenerate data: all " + std::to_string(acc.size()) + " acc rows (lines " +
                    std::to_string(acc.front()->line) + ".." + std::to_string(acc.back()->line) +
-                   ") are at the same position (" + num(acc[0]->u[0], 6) + "," + num(acc[0]->u[1], 6) +
-                   "," + num(acc[0]->u[2], 6) + "): offsets, gains and cross-axis terms cannot be separated";
+                   ") are at the same position (" + num(acc[0]->u[0], 6) + "," +
+                   num(acc[0]->u[1], 6) + "," + num(acc[0]->u[2], 6) +
+                   "): offsets, gains and cross-axis terms cannot be separated";
         }
     }
     // ---- 1. flip pairs per block ----
@@ -475,7 +527,8 @@ std::string fit_station(const Station &st, const FitOptions &opt, CalResult &out
     if (!e.empty()) return e;
     for (int a = 0; a < 3; a++) {
         bool any = false;
-        for (const auto &b : out.blocks) any |= b.have[a];
+        for (const auto &b : out.blocks)
+            any |= b.have[a];
         if (!any) {
             return "degenerate data: axis " + std::string(kAxis[a]) +
                    " has no +1 g / -1 g face pair in any block (the six faces are needed)";
@@ -491,7 +544,10 @@ std::string fit_station(const Station &st, const FitOptions &opt, CalResult &out
         for (int a = 0; a < 3; a++) {
             std::vector<double> bs, ks;
             for (const auto &b : out.blocks) {
-                if (b.have[a]) { bs.push_back(b.bias[a]); ks.push_back(b.scale[a]); }
+                if (b.have[a]) {
+                    bs.push_back(b.bias[a]);
+                    ks.push_back(b.scale[a]);
+                }
             }
             bmodel[a].kind = smodel[a].kind = TKind::Linear; // constant: p1 = 0
             bmodel[a].t_ref = smodel[a].t_ref = t_ref;
@@ -510,8 +566,12 @@ std::string fit_station(const Station &st, const FitOptions &opt, CalResult &out
         const int k = choice_index(opt.tmodel);
         for (int a = 0; a < 3; a++) {
             const TFit &fb = out.tfits.bias[k][a], &fs = out.tfits.scale[k][a];
-            if (!fb.ok) return "temperature model (" + std::string(tchoice_name(opt.tmodel)) + "), bias axis " + kAxis[a] + ": " + fb.message;
-            if (!fs.ok) return "temperature model (" + std::string(tchoice_name(opt.tmodel)) + "), scale factor axis " + kAxis[a] + ": " + fs.message;
+            if (!fb.ok)
+                return "temperature model (" + std::string(tchoice_name(opt.tmodel)) +
+                       "), bias axis " + kAxis[a] + ": " + fb.message;
+            if (!fs.ok)
+                return "temperature model (" + std::string(tchoice_name(opt.tmodel)) +
+                       "), scale factor axis " + kAxis[a] + ": " + fs.message;
             bmodel[a] = fb.model;
             smodel[a] = fs.model;
         }
@@ -550,10 +610,12 @@ std::string fit_station(const Station &st, const FitOptions &opt, CalResult &out
             double n = 0.0;
             std::array<double, 3> s{};
             for (const Row *r : still) {
-                for (int a = 0; a < 3; a++) s[a] += r->v[a] * r->n;
+                for (int a = 0; a < 3; a++)
+                    s[a] += r->v[a] * r->n;
                 n += r->n;
             }
-            for (int a = 0; a < 3; a++) out.gyro_offset[a] = s[a] / n * st.gyro_lsb_dps;
+            for (int a = 0; a < 3; a++)
+                out.gyro_offset[a] = s[a] / n * st.gyro_lsb_dps;
             for (int a = 0; a < 3; a++) {
                 double num = 0.0, den = 0.0;
                 for (const Row *r : turn) {
@@ -578,39 +640,49 @@ std::string fit_station(const Station &st, const FitOptions &opt, CalResult &out
     for (int a = 0; a < 3; a++) {
         const std::string ax = kAxis[a];
         auto bad = [&](const std::string &what, double v, const std::string &lim) {
-            return "coefficient out of range: " + what + "[" + ax + "] = " + num(v, 6) + " (limit " + lim + ")";
+            return "coefficient out of range: " + what + "[" + ax + "] = " + num(v, 6) +
+                   " (limit " + lim + ")";
         };
-        if (!(std::fabs(out.acc_offset[a]) <= kLimOffsetG)) return bad("acc_offset", out.acc_offset[a], "+-0.5 g");
-        if (!(out.acc_gain[a] >= kLimGainMin && out.acc_gain[a] <= kLimGainMax)) return bad("acc_gain", out.acc_gain[a], "0.75..1.25");
+        if (!(std::fabs(out.acc_offset[a]) <= kLimOffsetG))
+            return bad("acc_offset", out.acc_offset[a], "+-0.5 g");
+        if (!(out.acc_gain[a] >= kLimGainMin && out.acc_gain[a] <= kLimGainMax))
+            return bad("acc_gain", out.acc_gain[a], "0.75..1.25");
         for (int j = 0; j < 3; j++) {
             const double v = out.acc_misalign[a][j];
             if (a == j ? !(v >= kLimGainMin && v <= kLimGainMax) : !(std::fabs(v) <= kLimOffDiag)) {
-                return bad("acc_misalign[" + std::string(kAxis[j]) + "]", v, a == j ? "0.75..1.25" : "+-0.125");
+                return bad("acc_misalign[" + std::string(kAxis[j]) + "]", v,
+                           a == j ? "0.75..1.25" : "+-0.125");
             }
         }
         for (int k = 0; k < 4; k++) {
             const double lim = k < 2 ? kLimC01 : kLimC23;
-            if (!(std::fabs(out.acc_nonlin[a][k]) <= lim)) return bad("acc_nonlin c" + std::to_string(k), out.acc_nonlin[a][k], "+-" + num(lim, 6));
+            if (!(std::fabs(out.acc_nonlin[a][k]) <= lim))
+                return bad("acc_nonlin c" + std::to_string(k), out.acc_nonlin[a][k],
+                           "+-" + num(lim, 6));
         }
         e = check_tmodel(out.acc_tbias[a], kLimTBiasG, "acc_tbias[" + ax + "]");
         if (!e.empty()) return e;
         e = check_tmodel(out.acc_tscale[a], kLimTScale, "acc_tscale[" + ax + "]");
         if (!e.empty()) return e;
-        if (!(std::fabs(out.gyro_offset[a]) <= kLimGyroOffset)) return bad("gyro_offset", out.gyro_offset[a], "+-30 deg/s");
-        if (!(out.gyro_scale[a] >= kLimGainMin && out.gyro_scale[a] <= kLimGainMax)) return bad("gyro_scale", out.gyro_scale[a], "0.75..1.25");
+        if (!(std::fabs(out.gyro_offset[a]) <= kLimGyroOffset))
+            return bad("gyro_offset", out.gyro_offset[a], "+-30 deg/s");
+        if (!(out.gyro_scale[a] >= kLimGainMin && out.gyro_scale[a] <= kLimGainMax))
+            return bad("gyro_scale", out.gyro_scale[a], "0.75..1.25");
     }
 
     // ---- Report ----
     std::string rep;
     char b[256];
-    std::snprintf(b, sizeof b, "station: %zu rows, %zu acc rows, %zu blocks, %zu soak points %.1f..%.1f degC\n",
+    std::snprintf(b, sizeof b,
+                  "station: %zu rows, %zu acc rows, %zu blocks, %zu soak points %.1f..%.1f degC\n",
                   st.rows.size(), acc.size(), out.blocks.size(), out.soaks.size(),
                   out.blocks[out.soaks.front().front()].t, out.blocks[out.soaks.back().front()].t);
     rep += b;
     if (opt.tmodel != TChoice::None) {
-        rep += "temperature compensation: residual spread per model (seed 002 definitions)\n"
-               "  bias: Bmax-Bmin of soak-point means, mg [over every soak]\n"
-               "  scale factor: (Kmax-Kmin)/Kmean*1e6/span of soak-point means, ppm/degC [over every soak]\n";
+        rep +=
+            "temperature compensation: residual spread per model (seed 002 definitions)\n"
+            "  bias: Bmax-Bmin of soak-point means, mg [over every soak]\n"
+            "  scale factor: (Kmax-Kmin)/Kmean*1e6/span of soak-point means, ppm/degC [over every soak]\n";
         std::snprintf(b, sizeof b, "  %-4s %-6s %17s", "axis", "", "raw");
         rep += b;
         for (int k = 0; k < TemperatureFits::kKinds; k++) {
@@ -630,8 +702,10 @@ std::string fit_station(const Station &st, const FitOptions &opt, CalResult &out
                         rep += b;
                         continue;
                     }
-                    const Spread sp = spread(out.blocks, out.soaks, a, fb ? &fb->model : nullptr, fs ? &fs->model : nullptr);
-                    std::snprintf(b, sizeof b, " %7.3f [%7.3f]", q ? sp.scale_mean_ppm : sp.bias_mean_mg,
+                    const Spread sp = spread(out.blocks, out.soaks, a, fb ? &fb->model : nullptr,
+                                             fs ? &fs->model : nullptr);
+                    std::snprintf(b, sizeof b, " %7.3f [%7.3f]",
+                                  q ? sp.scale_mean_ppm : sp.bias_mean_mg,
                                   q ? sp.scale_all_ppm : sp.bias_all_mg);
                     rep += b;
                 }
@@ -642,10 +716,12 @@ std::string fit_station(const Station &st, const FitOptions &opt, CalResult &out
                (opt.tmodel == TChoice::Best ? " (= lorentz+cubic)" : "") + "\n";
     }
     rep += static_report(st, stage_flip, stage_lin, out);
-    if (!out.have_nonlin) rep += "nonlinearity: not fitted (needs a tilt sweep of >= 5 positions per axis)\n";
+    if (!out.have_nonlin)
+        rep += "nonlinearity: not fitted (needs a tilt sweep of >= 5 positions per axis)\n";
     if (out.have_gyro) {
-        std::snprintf(b, sizeof b, "gyro: offset %.4f %.4f %.4f deg/s, scale %.6f %.6f %.6f\n", out.gyro_offset[0],
-                      out.gyro_offset[1], out.gyro_offset[2], out.gyro_scale[0], out.gyro_scale[1], out.gyro_scale[2]);
+        std::snprintf(b, sizeof b, "gyro: offset %.4f %.4f %.4f deg/s, scale %.6f %.6f %.6f\n",
+                      out.gyro_offset[0], out.gyro_offset[1], out.gyro_offset[2], out.gyro_scale[0],
+                      out.gyro_scale[1], out.gyro_scale[2]);
         rep += b;
     }
     out.report = rep;

@@ -7,9 +7,11 @@
 #include <cmath>
 #include <cstdio>
 
-namespace calstation {
+namespace calstation
+{
 
-namespace {
+namespace
+{
 
 int32_t q(double v, double scale)
 {
@@ -69,8 +71,10 @@ std::string to_calrec(const CalResult &c, const Station &st, struct calrec &r)
     for (int a = 0; a < 3; a++) {
         r.acc_offset[a] = q(c.acc_offset[a], kQ16);
         r.acc_gain[a] = q(c.acc_gain[a], kQ30);
-        for (int j = 0; j < 3; j++) r.acc_misalign[a][j] = q(c.acc_misalign[a][j], kQ30);
-        for (int k = 0; k < 4; k++) r.acc_nonlin[a][k] = q(c.acc_nonlin[a][k], kQ30);
+        for (int j = 0; j < 3; j++)
+            r.acc_misalign[a][j] = q(c.acc_misalign[a][j], kQ30);
+        for (int k = 0; k < 4; k++)
+            r.acc_nonlin[a][k] = q(c.acc_nonlin[a][k], kQ30);
         put_tmodel(c.acc_tbias[a], kQ16, r.acc_tbias[a]);
         put_tmodel(c.acc_tscale[a], kQ30, r.acc_tscale[a]);
         r.gyro_offset[a] = q(c.gyro_offset[a], kQ16);
@@ -89,8 +93,10 @@ CalResult from_calrec(const struct calrec &r)
     for (int a = 0; a < 3; a++) {
         c.acc_offset[a] = r.acc_offset[a] / kQ16;
         c.acc_gain[a] = r.acc_gain[a] / kQ30;
-        for (int j = 0; j < 3; j++) c.acc_misalign[a][j] = r.acc_misalign[a][j] / kQ30;
-        for (int k = 0; k < 4; k++) c.acc_nonlin[a][k] = r.acc_nonlin[a][k] / kQ30;
+        for (int j = 0; j < 3; j++)
+            c.acc_misalign[a][j] = r.acc_misalign[a][j] / kQ30;
+        for (int k = 0; k < 4; k++)
+            c.acc_nonlin[a][k] = r.acc_nonlin[a][k] / kQ30;
         c.acc_tbias[a] = get_tmodel(r.acc_tbias[a], kQ16);
         c.acc_tscale[a] = get_tmodel(r.acc_tscale[a], kQ30);
         c.gyro_offset[a] = r.gyro_offset[a] / kQ16;
@@ -123,7 +129,9 @@ std::string firmware_check(const Station &st, const struct calrec &rec, FwCheck 
         if (row.kind != RowKind::Acc) continue;
         const fx_q16_t t = q(row.temp_c, kQ16);
         e = cal_acc_set_temp(&acc, t);
-        if (e != INC_OK) return std::string("firmware: cal_acc_set_temp failed at line ") + std::to_string(row.line);
+        if (e != INC_OK)
+            return std::string("firmware: cal_acc_set_temp failed at line ") +
+                   std::to_string(row.line);
         fx_q16_t in[3], o[3];
         std::array<double, 3> rin{};
         for (int i = 0; i < 3; i++) {
@@ -131,11 +139,14 @@ std::string firmware_check(const Station &st, const struct calrec &rec, FwCheck 
             rin[i] = in[i] / kQ16;
         }
         e = cal_acc_apply(&acc, in, o);
-        if (e != INC_OK) return std::string("firmware: cal_acc_apply failed at line ") + std::to_string(row.line);
+        if (e != INC_OK)
+            return std::string("firmware: cal_acc_apply failed at line ") +
+                   std::to_string(row.line);
         const auto ref = apply_double(d, rin, t / kQ16);
         // A tilt-sweep row: one axis sees sin(theta) with 3 deg < |theta| <= 30 deg.
         bool within30 = false;
-        for (int i = 0; i < 3; i++) within30 |= std::fabs(row.u[i]) > 0.05 && std::fabs(row.u[i]) <= 0.51;
+        for (int i = 0; i < 3; i++)
+            within30 |= std::fabs(row.u[i]) > 0.05 && std::fabs(row.u[i]) <= 0.51;
         for (int i = 0; i < 3; i++) {
             out.max_lsb = std::fmax(out.max_lsb, std::fabs(o[i] - ref[i] * kQ16));
             const double err = std::fabs(o[i] / kQ16 - row.u[i]) * 1e3;

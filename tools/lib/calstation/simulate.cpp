@@ -10,15 +10,18 @@
 
 #include <cmath>
 
-namespace calstation {
+namespace calstation
+{
 
-namespace {
+namespace
+{
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kThermalStepS = 10.0;
 
-class Sim {
-public:
+class Sim
+{
+  public:
     explicit Sim(const SimConfig &cfg) : cfg_(cfg)
     {
         sim_calpart_params prm;
@@ -34,30 +37,30 @@ public:
         st_.t_ref_c = 25.0;
         // An ADIS16364 (calrec family 3, PROD_ID 16364) with a serial number per part.
         st_.have_binding = true;
-        st_.binding = {3u, 16364u, 0u,
-                       static_cast<uint32_t>(cfg.part.paper ? 0x0A01u : (0x0B00u + (cfg.part.curve_seed & 0xFFu))),
-                       0u, 0u};
+        st_.binding = {
+            3u,
+            16364u,
+            0u,
+            static_cast<uint32_t>(cfg.part.paper ? 0x0A01u : (0x0B00u + (cfg.part.curve_seed & 0xFFu))),
+            0u,
+            0u};
         if (cfg.have_binding) st_.binding = cfg.binding;
     }
 
     Station run()
     {
         switch (cfg_.schedule) {
-        case Schedule::Ambient:
-            ambient_block();
-            break;
+        case Schedule::Ambient: ambient_block(); break;
         case Schedule::Calibration:
             ambient_block();
             chamber(-20.0, 60.0);
             break;
-        case Schedule::Validation:
-            chamber(-15.0, 55.0);
-            break;
+        case Schedule::Validation: chamber(-15.0, 55.0); break;
         }
         return st_;
     }
 
-private:
+  private:
     void sample(const double accel[3], const double rate[3], sim_inertial_input &out)
     {
         sim_inertial_input in;
@@ -116,7 +119,8 @@ private:
         r.temp_c = tsum / cfg_.samples;
         r.u = {ux, uy, uz};
         r.n = cfg_.samples;
-        for (int i = 0; i < 3; i++) r.v[i] = sum[i] / cfg_.samples;
+        for (int i = 0; i < 3; i++)
+            r.v[i] = sum[i] / cfg_.samples;
         st_.rows.push_back(r);
     }
 
@@ -162,7 +166,8 @@ private:
             const double still[3] = {0.0, 0.0, 0.0};
             for (long k = 0; k < n; k++) {
                 sample(zero_g, still, out);
-                for (int i = 0; i < 3; i++) sum[i] += sim_quantise(out.rate_dps[i], kSimGyroLsbDps, 14, nullptr);
+                for (int i = 0; i < 3; i++)
+                    sum[i] += sim_quantise(out.rate_dps[i], kSimGyroLsbDps, 14, nullptr);
                 if (k % 64 == 0) tsum += temp_reading();
             }
             Row r;
@@ -170,7 +175,8 @@ private:
             r.kind = RowKind::GyroStill;
             r.temp_c = tsum / ((n + 63) / 64);
             r.n = n;
-            for (int i = 0; i < 3; i++) r.v[i] = sum[i] / n;
+            for (int i = 0; i < 3; i++)
+                r.v[i] = sum[i] / n;
             st_.rows.push_back(r);
         }
         // Turns of +360 and -360 deg about each axis at 90 deg/s.
@@ -182,7 +188,8 @@ private:
                 rate[i] = s * 360.0 / dur;
                 for (long k = 0; k < n; k++) {
                     sample(zero_g, rate, out);
-                    for (int a = 0; a < 3; a++) integ[a] += sim_quantise(out.rate_dps[a], kSimGyroLsbDps, 14, nullptr) * dt;
+                    for (int a = 0; a < 3; a++)
+                        integ[a] += sim_quantise(out.rate_dps[a], kSimGyroLsbDps, 14, nullptr) * dt;
                     tsum += temp_reading();
                 }
                 Row r;
@@ -203,8 +210,10 @@ private:
     void chamber(double lo, double hi)
     {
         std::vector<double> cycle;
-        for (double t = lo; t <= hi + 1e-9; t += 10.0) cycle.push_back(t);
-        for (double t = hi - 10.0; t >= lo - 1e-9; t -= 10.0) cycle.push_back(t);
+        for (double t = lo; t <= hi + 1e-9; t += 10.0)
+            cycle.push_back(t);
+        for (double t = hi - 10.0; t >= lo - 1e-9; t -= 10.0)
+            cycle.push_back(t);
         for (int c = 0; c < cfg_.cycles; c++) {
             for (size_t k = (c == 0 ? 0 : 1); k < cycle.size(); k++) {
                 thermal(cycle[k], cfg_.soak_s);

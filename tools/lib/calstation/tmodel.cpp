@@ -7,11 +7,13 @@
 #include <cmath>
 #include <limits>
 
-namespace calstation {
+namespace calstation
+{
 
-namespace {
+namespace
+{
 
-constexpr double kWMin = 1.0, kWMax = 400.0;   // degC, the record's limits for w
+constexpr double kWMin = 1.0, kWMax = 400.0; // degC, the record's limits for w
 constexpr double kTcMin = -100.0, kTcMax = 200.0;
 constexpr int kLmMaxIter = 2000;
 
@@ -63,16 +65,13 @@ bool tparam_is_degc(TKind kind, int k)
 double TModel::eval(double t) const
 {
     switch (kind) {
-    case TKind::None:
-        return 0.0;
-    case TKind::Linear:
-        return p[0] + p[1] * clamp_u(t, t_ref, t_span);
+    case TKind::None: return 0.0;
+    case TKind::Linear: return p[0] + p[1] * clamp_u(t, t_ref, t_span);
     case TKind::Parabola: {
         const double u = clamp_u(t, t_ref, t_span);
         return p[0] + p[1] * u + p[2] * u * u;
     }
-    case TKind::Lorentz:
-        return p[0] + p[1] * lorentz(t, p[3], p[2]);
+    case TKind::Lorentz: return p[0] + p[1] * lorentz(t, p[3], p[2]);
     case TKind::LorentzCubic: {
         // The whole model is held at the ends of the calibrated range: its Lorentz part and its
         // polynomial part may cancel inside the range and must not be extrapolated apart.
@@ -176,7 +175,8 @@ TFit fit_three_point(const std::vector<TPoint> &m, double t_amb)
     return f;
 }
 
-namespace {
+namespace
+{
 
 // Model with a Lorentz term and `npoly` polynomial terms u, u^2, ... over [t_ref +- t_span].
 // Parameter vector: y0, H, w, Tc, poly...
@@ -185,7 +185,10 @@ struct LorentzProblem {
     int npoly;
     double t_ref, t_span;
 
-    double u(double t) const { return clamp_u(t, t_ref, t_span); }
+    double u(double t) const
+    {
+        return clamp_u(t, t_ref, t_span);
+    }
 
     // Solve the linear parameters (y0, H, poly) for fixed (w, Tc); returns SSE.
     double project(double w, double tc, Eigen::VectorXd &lin) const
@@ -255,7 +258,8 @@ struct VarPro {
     {
         Eigen::VectorXd l;
         const double s = pb.project(w, tc, l);
-        if (!std::isfinite(s) || std::fabs(l(1)) > h_limit) return std::numeric_limits<double>::infinity();
+        if (!std::isfinite(s) || std::fabs(l(1)) > h_limit)
+            return std::numeric_limits<double>::infinity();
         if (lin) *lin = l;
         return s;
     }
@@ -298,7 +302,8 @@ TFit fit_lorentz_n(const std::vector<TPoint> &pts, double h_limit, int npoly)
     // at a fraction of the cost). The centre may lie well outside the measured range (a tail),
     // hence the wide grid.
     std::vector<TPoint> sorted = pts, means;
-    std::sort(sorted.begin(), sorted.end(), [](const TPoint &a, const TPoint &b) { return a.t < b.t; });
+    std::sort(sorted.begin(), sorted.end(),
+              [](const TPoint &a, const TPoint &b) { return a.t < b.t; });
     for (size_t i = 0; i < sorted.size();) {
         size_t j = i;
         double st = 0.0, sy = 0.0;
@@ -352,7 +357,8 @@ TFit fit_lorentz_n(const std::vector<TPoint> &pts, double h_limit, int npoly)
             const double sn = vp.sse(wn, tn);
             if (sn <= sse) {
                 const double rel = (sse - sn) / std::max(sse, 1e-300);
-                const double step = std::fabs(wn - w) / w + std::fabs(tn - tc) / std::max(std::fabs(tc), 1.0);
+                const double step = std::fabs(wn - w) / w +
+                                    std::fabs(tn - tc) / std::max(std::fabs(tc), 1.0);
                 w = wn;
                 tc = tn;
                 sse = sn;
@@ -386,7 +392,8 @@ TFit fit_lorentz_n(const std::vector<TPoint> &pts, double h_limit, int npoly)
     if (npoly) {
         f.model.t_ref = pb.t_ref;
         f.model.t_span = pb.t_span;
-        for (int k = 0; k < npoly; k++) f.model.p[4 + k] = lin(2 + k);
+        for (int k = 0; k < npoly; k++)
+            f.model.p[4 + k] = lin(2 + k);
     }
     f.ok = true;
     return f;
@@ -408,7 +415,8 @@ TFit fit_pwl(const std::vector<TPoint> &pts, double t0, double dt, int n)
 {
     TFit f;
     if (n < 2 || n > kTParams || !(dt > 0.0)) {
-        f.message = "PWL fit needs 2.." + std::to_string(kTParams) + " knots and a positive spacing";
+        f.message = "PWL fit needs 2.." + std::to_string(kTParams) +
+                    " knots and a positive spacing";
         return f;
     }
     TModel m;
@@ -442,7 +450,8 @@ TFit fit_pwl(const std::vector<TPoint> &pts, double t0, double dt, int n)
         return f;
     }
     const Eigen::VectorXd c = qr.solve(y);
-    for (int k = 0; k < n; k++) m.p[k] = c(k);
+    for (int k = 0; k < n; k++)
+        m.p[k] = c(k);
     f.model = m;
     f.ok = true;
     return f;

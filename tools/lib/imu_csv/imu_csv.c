@@ -13,9 +13,11 @@
 static char *trim(char *s)
 {
     char *e;
-    while (*s == ' ' || *s == '\t') s++;
+    while (*s == ' ' || *s == '\t')
+        s++;
     e = s + strlen(s);
-    while (e > s && (e[-1] == ' ' || e[-1] == '\t' || e[-1] == '\r' || e[-1] == '\n')) e--;
+    while (e > s && (e[-1] == ' ' || e[-1] == '\t' || e[-1] == '\r' || e[-1] == '\n'))
+        e--;
     *e = '\0';
     return s;
 }
@@ -45,8 +47,8 @@ int imu_csv_number(const char *s, double *out)
     return 0;
 }
 
-static const char *const col_names[8] = {"time", "gyro x", "gyro y", "gyro z", "accel x", "accel y",
-                                         "accel z", "temperature"};
+static const char *const col_names[8] = {"time",    "gyro x",  "gyro y",  "gyro z",
+                                         "accel x", "accel y", "accel z", "temperature"};
 
 static int fail(struct imu_csv_table *t, int err)
 {
@@ -72,7 +74,8 @@ int imu_csv_read(FILE *in, const char *name, struct imu_csv_table *t, char *msg,
         struct imu_csv_row r;
         line++;
         if (got == SIM_LINE_TOO_LONG) {
-            snprintf(msg, msg_len, "%s line %ld: longer than %d characters", name, line, IMU_CSV_MAX_LINE);
+            snprintf(msg, msg_len, "%s line %ld: longer than %d characters", name, line,
+                     IMU_CSV_MAX_LINE);
             return fail(t, INC_ERR_FORMAT);
         }
         if (got == SIM_LINE_NUL) {
@@ -98,8 +101,11 @@ int imu_csv_read(FILE *in, const char *name, struct imu_csv_table *t, char *msg,
             }
             if (named == n) {
                 if (n != 7 && n != 8) {
-                    snprintf(msg, msg_len, "%s line %ld: the header has %d columns; expected 7 (time, gyro x y z, "
-                             "accel x y z) or 8 (and temperature)", name, line, n);
+                    snprintf(
+                        msg, msg_len,
+                        "%s line %ld: the header has %d columns; expected 7 (time, gyro x y z, "
+                        "accel x y z) or 8 (and temperature)",
+                        name, line, n);
                     return fail(t, INC_ERR_FORMAT);
                 }
                 t->cols = n;
@@ -109,24 +115,26 @@ int imu_csv_read(FILE *in, const char *name, struct imu_csv_table *t, char *msg,
         }
         if (t->cols == 0) {
             if (n != 7 && n != 8) {
-                snprintf(msg, msg_len, "%s line %ld: %d fields; expected 7 (time, gyro x y z, accel x y z) or 8 "
-                         "(and temperature)", name, line, n);
+                snprintf(msg, msg_len,
+                         "%s line %ld: %d fields; expected 7 (time, gyro x y z, accel x y z) or 8 "
+                         "(and temperature)",
+                         name, line, n);
                 return fail(t, INC_ERR_FORMAT);
             }
             t->cols = n;
             cols_line = line;
         }
         if (n != t->cols) {
-            snprintf(msg, msg_len, "%s line %ld: %d%s fields; expected %d as on line %ld", name, line,
-                     n > IMU_CSV_MAX_FIELDS ? IMU_CSV_MAX_FIELDS : n, n > IMU_CSV_MAX_FIELDS ? " or more" : "",
-                     t->cols, cols_line);
+            snprintf(msg, msg_len, "%s line %ld: %d%s fields; expected %d as on line %ld", name,
+                     line, n > IMU_CSV_MAX_FIELDS ? IMU_CSV_MAX_FIELDS : n,
+                     n > IMU_CSV_MAX_FIELDS ? " or more" : "", t->cols, cols_line);
             return fail(t, INC_ERR_FORMAT);
         }
         for (k = 0; k < n; k++) {
             const int e = imu_csv_number(f[k], &r.v[k]);
             if (e != 0) {
-                snprintf(msg, msg_len, "%s line %ld: field %d (%s) '%s' is %s", name, line, k + 1, col_names[k], f[k],
-                         e == 1 ? "not a number" : "NaN or infinite");
+                snprintf(msg, msg_len, "%s line %ld: field %d (%s) '%s' is %s", name, line, k + 1,
+                         col_names[k], f[k], e == 1 ? "not a number" : "NaN or infinite");
                 return fail(t, INC_ERR_FORMAT);
             }
         }
@@ -138,8 +146,8 @@ int imu_csv_read(FILE *in, const char *name, struct imu_csv_table *t, char *msg,
             return fail(t, INC_ERR_FORMAT);
         }
         if (t->n > 0 && !(r.v[0] > t->rows[t->n - 1].v[0])) {
-            snprintf(msg, msg_len, "%s line %ld: time %.9g s does not increase (line %ld: %.9g s)", name, line, r.v[0],
-                     t->rows[t->n - 1].line, t->rows[t->n - 1].v[0]);
+            snprintf(msg, msg_len, "%s line %ld: time %.9g s does not increase (line %ld: %.9g s)",
+                     name, line, r.v[0], t->rows[t->n - 1].line, t->rows[t->n - 1].v[0]);
             return fail(t, INC_ERR_FORMAT);
         }
         r.line = line;

@@ -52,7 +52,7 @@ typedef int32_t fx_q30_t; /* Q2.30: unitless ratio, [-2, 2) */
 #define FX_Q30_HALF ((fx_q30_t)0x20000000)
 
 /* An integer constant n in Q16 (compile time; n must be in [-32768, 32767]). */
-#define FX_Q16_INT(n) ((fx_q16_t)((n) * 65536))
+#define FX_Q16_INT(n) ((fx_q16_t)((n)*65536))
 /* Angles in Q16 degrees. */
 #define FX_DEG_45 FX_Q16_INT(45)
 #define FX_DEG_90 FX_Q16_INT(90)

@@ -53,11 +53,11 @@ extern "C" {
 #define ADIS16255_REG_AUX_DAC 0x30u
 #define ADIS16255_REG_GPIO_CTRL 0x32u
 #define ADIS16255_REG_MSC_CTRL 0x34u
-#define ADIS16255_REG_SMPL_PRD 0x36u   /* bit 7 time base, bits 6..0 NS; 8-bit register */
-#define ADIS16255_REG_SENS_AVG 0x38u   /* range and filter, [U] layout (below) */
+#define ADIS16255_REG_SMPL_PRD 0x36u /* bit 7 time base, bits 6..0 NS; 8-bit register */
+#define ADIS16255_REG_SENS_AVG 0x38u /* range and filter, [U] layout (below) */
 #define ADIS16255_REG_SLP_CNT 0x3Au
 #define ADIS16255_REG_STATUS 0x3Cu
-#define ADIS16255_REG_COMMAND 0x3Eu    /* 8-bit register, write only */
+#define ADIS16255_REG_COMMAND 0x3Eu /* 8-bit register, write only */
 
 /* Output register widths. */
 #define ADIS16255_GYRO_BITS 14u
@@ -68,12 +68,12 @@ extern "C" {
 #define ADIS16255_GYRO_SCALE_UNITY 0x0800u
 
 /* SMPL_PRD (§2.4): TS = TB * (NS + 1). */
-#define ADIS16255_SMPL_PRD_TB 0x80u        /* 0: TB = 1.953 ms, 1: TB = 60.54 ms */
+#define ADIS16255_SMPL_PRD_TB 0x80u /* 0: TB = 1.953 ms, 1: TB = 60.54 ms */
 #define ADIS16255_SMPL_PRD_NS_MASK 0x7Fu
-#define ADIS16255_TB_FAST_US 1953u         /* time base, bit 7 = 0 (A4) */
-#define ADIS16255_TB_SLOW_US 60540u        /* time base, bit 7 = 1 (A4) */
-#define ADIS16255_SMPL_PRD_DEFAULT 0x01u   /* 256 SPS, factory default (A4) */
-#define ADIS16255_FAST_NS_MAX 7u           /* NS <= 7 with TB = 0: >= 64 SPS, SCLK <= 2.5 MHz */
+#define ADIS16255_TB_FAST_US 1953u       /* time base, bit 7 = 0 (A4) */
+#define ADIS16255_TB_SLOW_US 60540u      /* time base, bit 7 = 1 (A4) */
+#define ADIS16255_SMPL_PRD_DEFAULT 0x01u /* 256 SPS, factory default (A4) */
+#define ADIS16255_FAST_NS_MAX 7u         /* NS <= 7 with TB = 0: >= 64 SPS, SCLK <= 2.5 MHz */
 
 /*
  * SENS_AVG [U] layout (by analogy with the ADIS1636x, sensors.md §2.3): bits 10..8 range code
@@ -83,32 +83,32 @@ extern "C" {
 #define ADIS16255_SENS_AVG_RANGE_SHIFT 8u
 #define ADIS16255_SENS_AVG_RANGE_MASK 0x0700u
 #define ADIS16255_SENS_AVG_FILTER_MASK 0x0007u
-#define ADIS16255_FILTER_M_MAX 6u          /* [U] code 7 invalid, as on the ADIS1636x */
+#define ADIS16255_FILTER_M_MAX 6u /* [U] code 7 invalid, as on the ADIS1636x */
 /* [U] narrower ranges need more filtering on the ADIS1636x (±150: M >= 2, ±75: M >= 4); the
  * driver imposes the same on the ±160 and ±80 ranges: the safe side if the part shares it. */
 #define ADIS16255_FILTER_M_MIN_160 2u
 #define ADIS16255_FILTER_M_MIN_80 4u
 
 /* MSC_CTRL (§2.3). */
-#define ADIS16255_MSC_DR_LINE 0x0001u      /* data-ready line: 0 = DIO0, 1 = DIO1 [U] */
-#define ADIS16255_MSC_DR_POL_HIGH 0x0002u  /* data-ready active high */
-#define ADIS16255_MSC_DR_EN 0x0004u        /* data-ready enable */
-#define ADIS16255_MSC_ST_POS 0x0100u       /* manual self-test, positive */
-#define ADIS16255_MSC_ST_NEG 0x0200u       /* manual self-test, negative */
-#define ADIS16255_MSC_ST_INT 0x0400u       /* internal self-test; clears itself when done */
-#define ADIS16255_MSC_DEFINED 0x0707u      /* bits the driver knows; the rest read 0 */
+#define ADIS16255_MSC_DR_LINE 0x0001u     /* data-ready line: 0 = DIO0, 1 = DIO1 [U] */
+#define ADIS16255_MSC_DR_POL_HIGH 0x0002u /* data-ready active high */
+#define ADIS16255_MSC_DR_EN 0x0004u       /* data-ready enable */
+#define ADIS16255_MSC_ST_POS 0x0100u      /* manual self-test, positive */
+#define ADIS16255_MSC_ST_NEG 0x0200u      /* manual self-test, negative */
+#define ADIS16255_MSC_ST_INT 0x0400u      /* internal self-test; clears itself when done */
+#define ADIS16255_MSC_DEFINED 0x0707u     /* bits the driver knows; the rest read 0 */
 
 /* STATUS (§2.3). */
-#define ADIS16255_STATUS_SUPPLY_LOW 0x0001u   /* supply < 4.75 V */
-#define ADIS16255_STATUS_SUPPLY_HIGH 0x0002u  /* supply > 5.25 V */
-#define ADIS16255_STATUS_FLASH_FAIL 0x0004u   /* flash update failed */
-#define ADIS16255_STATUS_SPI_FAIL 0x0008u     /* SPI communication failure */
-#define ADIS16255_STATUS_OVERRANGE 0x0010u    /* gyro over range */
-#define ADIS16255_STATUS_SELF_TEST 0x0020u    /* self-test error */
-#define ADIS16255_STATUS_FLASH_CRC 0x0040u    /* flash checksum (ADIS16260 headers only) */
+#define ADIS16255_STATUS_SUPPLY_LOW 0x0001u  /* supply < 4.75 V */
+#define ADIS16255_STATUS_SUPPLY_HIGH 0x0002u /* supply > 5.25 V */
+#define ADIS16255_STATUS_FLASH_FAIL 0x0004u  /* flash update failed */
+#define ADIS16255_STATUS_SPI_FAIL 0x0008u    /* SPI communication failure */
+#define ADIS16255_STATUS_OVERRANGE 0x0010u   /* gyro over range */
+#define ADIS16255_STATUS_SELF_TEST 0x0020u   /* self-test error */
+#define ADIS16255_STATUS_FLASH_CRC 0x0040u   /* flash checksum (ADIS16260 headers only) */
 #define ADIS16255_STATUS_ALARM1 0x0100u
 #define ADIS16255_STATUS_ALARM2 0x0200u
-#define ADIS16255_STATUS_DEFINED 0x037Fu      /* any other bit set: not a STATUS word (bus fault) */
+#define ADIS16255_STATUS_DEFINED 0x037Fu /* any other bit set: not a STATUS word (bus fault) */
 
 /* COMMAND (§2.3). */
 #define ADIS16255_CMD_AUTONULL 0x01u
@@ -135,13 +135,13 @@ extern "C" {
 
 /* ------------------------------------------------------------------ command times [U] */
 /* No source gives this family's command durations; long waits, named and listed. */
-#define ADIS16255_RESET_MS 220u            /* Linux adis16260 reset/sw-reset timeout */
-#define ADIS16255_FLASH_UPDATE_MS 200u     /* 2 x the 100 ms the OPTEC ADIS16405 code waits */
-#define ADIS16255_FACTORY_RESTORE_MS 100u  /* 2 x the 50 ms of ADI's ADIS16364 example */
-#define ADIS16255_AUTONULL_MS 100u         /* 2 x ADI's 50 ms, plus 2 x the filter window */
-#define ADIS16255_SELF_TEST_MS 35u         /* first look (staging ADIS16255 driver waits 35 ms) */
+#define ADIS16255_RESET_MS 220u             /* Linux adis16260 reset/sw-reset timeout */
+#define ADIS16255_FLASH_UPDATE_MS 200u      /* 2 x the 100 ms the OPTEC ADIS16405 code waits */
+#define ADIS16255_FACTORY_RESTORE_MS 100u   /* 2 x the 50 ms of ADI's ADIS16364 example */
+#define ADIS16255_AUTONULL_MS 100u          /* 2 x ADI's 50 ms, plus 2 x the filter window */
+#define ADIS16255_SELF_TEST_MS 35u          /* first look (staging ADIS16255 driver waits 35 ms) */
 #define ADIS16255_SELF_TEST_TIMEOUT_MS 220u /* give up (Linux adis16260 self_test_ms) */
-#define ADIS16255_POLL_MS 5u               /* poll interval while waiting for the part */
+#define ADIS16255_POLL_MS 5u                /* poll interval while waiting for the part */
 /* The part still busy (garbage answers) after a command's wait, or busy before a command for
  * a reason the driver did not cause: poll this long before INC_ERR_BUSY. */
 #define ADIS16255_BUSY_TIMEOUT_MS 1000u
@@ -156,20 +156,20 @@ extern "C" {
 
 /* Measurement range; the value is the SENS_AVG range code and the multiple of 5/273 °/s. */
 enum adis16255_range {
-    ADIS16255_RANGE_80 = 1,   /* ±80 °/s, 5/273 °/s per LSB (0.01832) */
-    ADIS16255_RANGE_160 = 2,  /* ±160 °/s, 10/273 (0.03663) */
-    ADIS16255_RANGE_320 = 4,  /* ±320 °/s, 20/273 (0.07326, datasheet) */
+    ADIS16255_RANGE_80 = 1,  /* ±80 °/s, 5/273 °/s per LSB (0.01832) */
+    ADIS16255_RANGE_160 = 2, /* ±160 °/s, 10/273 (0.03663) */
+    ADIS16255_RANGE_320 = 4, /* ±320 °/s, 20/273 (0.07326, datasheet) */
 };
 
 /* Which identity check failed at init (adis16255.id_check). */
 enum adis16255_id_check {
     ADIS16255_ID_OK = 0,
-    ADIS16255_ID_STUCK_HIGH,     /* every word 0xFFFF: no device or MISO stuck at 1 */
-    ADIS16255_ID_STUCK_LOW,      /* every word 0x0000: MISO stuck at 0 */
-    ADIS16255_ID_SUPPLY,         /* SUPPLY_OUT outside 4.0 .. 6.0 V */
-    ADIS16255_ID_RESERVED_BITS,  /* a reserved bit set in GYRO_SCALE/SMPL_PRD/MSC_CTRL/STATUS */
-    ADIS16255_ID_SENS_AVG,       /* SENS_AVG not a valid range code + filter */
-    ADIS16255_ID_READBACK,       /* the configuration written did not read back */
+    ADIS16255_ID_STUCK_HIGH,    /* every word 0xFFFF: no device or MISO stuck at 1 */
+    ADIS16255_ID_STUCK_LOW,     /* every word 0x0000: MISO stuck at 0 */
+    ADIS16255_ID_SUPPLY,        /* SUPPLY_OUT outside 4.0 .. 6.0 V */
+    ADIS16255_ID_RESERVED_BITS, /* a reserved bit set in GYRO_SCALE/SMPL_PRD/MSC_CTRL/STATUS */
+    ADIS16255_ID_SENS_AVG,      /* SENS_AVG not a valid range code + filter */
+    ADIS16255_ID_READBACK,      /* the configuration written did not read back */
 };
 
 /* STATUS, decoded. raw keeps the register word. */
@@ -190,23 +190,24 @@ struct adis16255_cfg {
     const struct spi_bus *bus;
     const struct hal *hal;
     hal_pin_t cs;
-    hal_pin_t dr_pin;             /* MCU pin wired to the part's data-ready DIO; HAL_PIN_NONE:
+    hal_pin_t dr_pin; /* MCU pin wired to the part's data-ready DIO; HAL_PIN_NONE:
                                      not wired (adis16255_wait_sample unavailable) */
-    uint8_t smpl_prd;             /* SMPL_PRD: bit 7 time base, bits 6..0 NS */
+    uint8_t smpl_prd; /* SMPL_PRD: bit 7 time base, bits 6..0 NS */
     enum adis16255_range range;
-    uint8_t filter_m;             /* 0..ADIS16255_FILTER_M_MAX: 2^M taps */
-    bool dr_enable;               /* MSC_CTRL data-ready output on */
+    uint8_t filter_m; /* 0..ADIS16255_FILTER_M_MAX: 2^M taps */
+    bool dr_enable;   /* MSC_CTRL data-ready output on */
     bool dr_active_high;
-    uint8_t dr_line;              /* 0 = DIO0, 1 = DIO1 */
-    bool reset_at_init;           /* software reset first (waits ADIS16255_RESET_MS) */
-    bool self_test_at_init;       /* run adis16255_self_test() at the end of init */
+    uint8_t dr_line;        /* 0 = DIO0, 1 = DIO1 */
+    bool reset_at_init;     /* software reset first (waits ADIS16255_RESET_MS) */
+    bool self_test_at_init; /* run adis16255_self_test() at the end of init */
 };
 
 /* Sample flags. */
-#define ADIS16255_SAMPLE_GYRO_NEW 0x01u  /* ND of GYRO_OUT */
-#define ADIS16255_SAMPLE_TEMP_NEW 0x02u  /* ND of TEMP_OUT */
-#define ADIS16255_SAMPLE_ALARM 0x04u     /* EA seen; status holds STATUS */
-#define ADIS16255_SAMPLE_OVERRUN 0x08u   /* wait_sample: more than one data-ready edge since the
+#define ADIS16255_SAMPLE_GYRO_NEW 0x01u /* ND of GYRO_OUT */
+#define ADIS16255_SAMPLE_TEMP_NEW 0x02u /* ND of TEMP_OUT */
+#define ADIS16255_SAMPLE_ALARM 0x04u    /* EA seen; status holds STATUS */
+#define ADIS16255_SAMPLE_OVERRUN \
+    0x08u /* wait_sample: more than one data-ready edge since the
                                             previous sample (samples were skipped) */
 
 /*
@@ -217,24 +218,24 @@ struct adis16255_cfg {
 struct adis16255_sample {
     bool valid;
     uint8_t flags;
-    int32_t rate_dps_q16;         /* Q16.16 °/s */
-    int32_t temp_c_q16;           /* Q16.16 °C */
-    uint16_t gyro_word;           /* GYRO_OUT as read (ND, EA, data) */
-    uint16_t temp_word;           /* TEMP_OUT as read */
+    int32_t rate_dps_q16;           /* Q16.16 °/s */
+    int32_t temp_c_q16;             /* Q16.16 °C */
+    uint16_t gyro_word;             /* GYRO_OUT as read (ND, EA, data) */
+    uint16_t temp_word;             /* TEMP_OUT as read */
     struct adis16255_status status; /* decoded STATUS when EA was seen, else zero */
-    uint64_t t_ns;                /* hal time of the read */
+    uint64_t t_ns;                  /* hal time of the read */
 };
 
 /* Driver state: caller-allocated (static), one per part. Fields are read-only to the caller. */
 struct adis16255 {
     struct adis16255_cfg cfg;
     struct spi_dev dev;
-    uint16_t smpl_prd;            /* configuration written to the part (read-back checked) */
+    uint16_t smpl_prd; /* configuration written to the part (read-back checked) */
     uint16_t sens_avg;
     uint16_t msc_ctrl;
-    bool fast;                    /* SCLK/stall for >= 64 SPS in use */
-    uint64_t busy_until_ns;       /* the part is busy with a command the driver issued */
-    struct adis_dr dr;            /* data-ready edges seen and consumed (wait_sample) */
+    bool fast;              /* SCLK/stall for >= 64 SPS in use */
+    uint64_t busy_until_ns; /* the part is busy with a command the driver issued */
+    struct adis_dr dr;      /* data-ready edges seen and consumed (wait_sample) */
     bool dr_attached;
     bool initialised;
     enum adis16255_id_check id_check; /* the identity check that failed at init */

@@ -52,8 +52,8 @@ enum adis_imu_variant {
     ADIS_IMU_ADIS16400 = 4,
     ADIS_IMU_ADIS16405 = 5,
     ADIS_IMU_VARIANT_COUNT = 6,
-    ADIS_IMU_ANY = 0xFE,      /* config only: accept any known PROD_ID */
-    ADIS_IMU_UNKNOWN = 0xFF,  /* a PROD_ID that names none of the parts above */
+    ADIS_IMU_ANY = 0xFE,     /* config only: accept any known PROD_ID */
+    ADIS_IMU_UNKNOWN = 0xFF, /* a PROD_ID that names none of the parts above */
 };
 
 enum adis_imu_family {
@@ -70,7 +70,7 @@ enum adis_imu_family {
 #define ADIS_IMU_PROD_ID_16405 0x4015u
 
 struct adis_imu_variant_info {
-    const char *name;          /* "ADIS16405" */
+    const char *name; /* "ADIS16405" */
     uint16_t prod_id;
     uint8_t family;            /* enum adis_imu_family */
     uint8_t burst_words;       /* output words after the burst command: 11 or 12 */
@@ -93,27 +93,27 @@ const char *adis_imu_variant_name(enum adis_imu_variant v);
  * register; the high byte is at address + 1. ADIS_IMU_REG_* exist on both families,
  * ADIS1636X_REG_* / ADIS1640X_REG_* only on that family.
  * ------------------------------------------------------------------------------------------- */
-#define ADIS_IMU_REG_FLASH_CNT 0x00u   /* 16-bit flash write counter, read-only */
-#define ADIS_IMU_REG_SUPPLY_OUT 0x02u  /* 12-bit (1636x) / 14-bit (1640x [U]) unsigned, 2.418 mV */
-#define ADIS_IMU_REG_XGYRO_OUT 0x04u   /* 14-bit two's complement, 0.05 deg/s at +-300 deg/s */
+#define ADIS_IMU_REG_FLASH_CNT 0x00u  /* 16-bit flash write counter, read-only */
+#define ADIS_IMU_REG_SUPPLY_OUT 0x02u /* 12-bit (1636x) / 14-bit (1640x [U]) unsigned, 2.418 mV */
+#define ADIS_IMU_REG_XGYRO_OUT 0x04u  /* 14-bit two's complement, 0.05 deg/s at +-300 deg/s */
 #define ADIS_IMU_REG_YGYRO_OUT 0x06u
 #define ADIS_IMU_REG_ZGYRO_OUT 0x08u
-#define ADIS_IMU_REG_XACCL_OUT 0x0Au   /* 14-bit two's complement, LSB per variant */
+#define ADIS_IMU_REG_XACCL_OUT 0x0Au /* 14-bit two's complement, LSB per variant */
 #define ADIS_IMU_REG_YACCL_OUT 0x0Cu
 #define ADIS_IMU_REG_ZACCL_OUT 0x0Eu
-#define ADIS1636X_REG_XTEMP_OUT 0x10u  /* 12-bit two's complement, 0.136 C, 0 = 25 C */
+#define ADIS1636X_REG_XTEMP_OUT 0x10u /* 12-bit two's complement, 0.136 C, 0 = 25 C */
 #define ADIS1636X_REG_YTEMP_OUT 0x12u
 #define ADIS1636X_REG_ZTEMP_OUT 0x14u
-#define ADIS1636X_REG_AUX_ADC 0x16u    /* 12-bit unsigned, 805.8 uV */
-#define ADIS1640X_REG_XMAGN_OUT 0x10u  /* 14-bit two's complement, 0.5 mgauss */
+#define ADIS1636X_REG_AUX_ADC 0x16u   /* 12-bit unsigned, 805.8 uV */
+#define ADIS1640X_REG_XMAGN_OUT 0x10u /* 14-bit two's complement, 0.5 mgauss */
 #define ADIS1640X_REG_YMAGN_OUT 0x12u
 #define ADIS1640X_REG_ZMAGN_OUT 0x14u
-#define ADIS1640X_REG_TEMP_OUT 0x16u   /* 12-bit two's complement, 0.14 C, 0 = 25 C */
-#define ADIS1640X_REG_AUX_ADC 0x18u    /* 12-bit unsigned, 805.8 uV */
-#define ADIS_IMU_REG_XGYRO_OFF 0x1Au   /* 13-bit two's complement, 0.0125 deg/s [U width] */
+#define ADIS1640X_REG_TEMP_OUT 0x16u /* 12-bit two's complement, 0.14 C, 0 = 25 C */
+#define ADIS1640X_REG_AUX_ADC 0x18u  /* 12-bit unsigned, 805.8 uV */
+#define ADIS_IMU_REG_XGYRO_OFF 0x1Au /* 13-bit two's complement, 0.0125 deg/s [U width] */
 #define ADIS_IMU_REG_YGYRO_OFF 0x1Cu
 #define ADIS_IMU_REG_ZGYRO_OFF 0x1Eu
-#define ADIS_IMU_REG_XACCL_OFF 0x20u   /* 12-bit two's complement, LSB [U] */
+#define ADIS_IMU_REG_XACCL_OFF 0x20u /* 12-bit two's complement, LSB [U] */
 #define ADIS_IMU_REG_YACCL_OFF 0x22u
 #define ADIS_IMU_REG_ZACCL_OFF 0x24u
 #define ADIS1636X_REG_ALM_MAG1 0x26u
@@ -122,19 +122,19 @@ const char *adis_imu_variant_name(enum adis_imu_variant v);
 #define ADIS1636X_REG_ALM_SMPL2 0x2Cu
 #define ADIS1636X_REG_ALM_CTRL 0x2Eu
 #define ADIS1636X_REG_AUX_DAC 0x30u
-#define ADIS1640X_REG_XMAGN_HIF 0x26u  /* magnetometer hard-iron correction */
+#define ADIS1640X_REG_XMAGN_HIF 0x26u /* magnetometer hard-iron correction */
 #define ADIS1640X_REG_YMAGN_HIF 0x28u
 #define ADIS1640X_REG_ZMAGN_HIF 0x2Au
-#define ADIS1640X_REG_XMAGN_SIF 0x2Cu  /* magnetometer soft-iron correction, default 0x0800 */
+#define ADIS1640X_REG_XMAGN_SIF 0x2Cu /* magnetometer soft-iron correction, default 0x0800 */
 #define ADIS1640X_REG_YMAGN_SIF 0x2Eu
 #define ADIS1640X_REG_ZMAGN_SIF 0x30u
 #define ADIS_IMU_REG_GPIO_CTRL 0x32u
-#define ADIS_IMU_REG_MSC_CTRL 0x34u    /* default 0x0006 */
-#define ADIS_IMU_REG_SMPL_PRD 0x36u    /* default 0x0001 (819.2 SPS) */
-#define ADIS_IMU_REG_SENS_AVG 0x38u    /* default 0x0402 */
+#define ADIS_IMU_REG_MSC_CTRL 0x34u /* default 0x0006 */
+#define ADIS_IMU_REG_SMPL_PRD 0x36u /* default 0x0001 (819.2 SPS) */
+#define ADIS_IMU_REG_SENS_AVG 0x38u /* default 0x0402 */
 #define ADIS_IMU_REG_SLP_CNT 0x3Au
 #define ADIS_IMU_REG_DIAG_STAT 0x3Cu
-#define ADIS_IMU_REG_GLOB_CMD 0x3Eu    /* write-only commands; 0x3E00 as a read = burst */
+#define ADIS_IMU_REG_GLOB_CMD 0x3Eu /* write-only commands; 0x3E00 as a read = burst */
 #define ADIS1640X_REG_ALM_MAG1 0x40u
 #define ADIS1640X_REG_ALM_MAG2 0x42u
 #define ADIS1640X_REG_ALM_SMPL1 0x44u
@@ -143,25 +143,25 @@ const char *adis_imu_variant_name(enum adis_imu_variant v);
 #define ADIS1640X_REG_AUX_DAC 0x4Au
 #define ADIS1636X_REG_LOT_ID1 0x52u
 #define ADIS1636X_REG_LOT_ID2 0x54u
-#define ADIS_IMU_REG_PROD_ID 0x56u     /* "PRODUCT_ID" on the 1640x */
+#define ADIS_IMU_REG_PROD_ID 0x56u /* "PRODUCT_ID" on the 1640x */
 #define ADIS1636X_REG_SERIAL_NUM 0x58u
 
-#define ADIS_IMU_BURST_CMD 0x3E00u     /* DIN that starts a burst read */
+#define ADIS_IMU_BURST_CMD 0x3E00u /* DIN that starts a burst read */
 
 /* Access of a register. */
 enum adis_imu_reg_access {
-    ADIS_IMU_RO = 1,        /* read-only */
-    ADIS_IMU_RW = 3,        /* read-write (byte writes) */
-    ADIS_IMU_WO = 2,        /* write-only (GLOB_CMD) */
+    ADIS_IMU_RO = 1, /* read-only */
+    ADIS_IMU_RW = 3, /* read-write (byte writes) */
+    ADIS_IMU_WO = 2, /* write-only (GLOB_CMD) */
 };
 
 struct adis_imu_reg_desc {
-    const char *name;       /* datasheet name */
-    uint8_t addr;           /* even address */
-    uint8_t bits;           /* data width (field below ND/EA for outputs) */
-    uint8_t access;         /* enum adis_imu_reg_access */
-    bool is_output;         /* carries ND (bit 15) and EA (bit 14) */
-    bool is_signed;         /* two's complement data */
+    const char *name; /* datasheet name */
+    uint8_t addr;     /* even address */
+    uint8_t bits;     /* data width (field below ND/EA for outputs) */
+    uint8_t access;   /* enum adis_imu_reg_access */
+    bool is_output;   /* carries ND (bit 15) and EA (bit 14) */
+    bool is_signed;   /* two's complement data */
 };
 
 /* The register map of a family: *count entries in address order. NULL for a bad family. */
@@ -170,14 +170,14 @@ const struct adis_imu_reg_desc *adis_imu_reg_map(enum adis_imu_family f, size_t 
 const struct adis_imu_reg_desc *adis_imu_reg_find(enum adis_imu_family f, uint8_t addr);
 
 /* MSC_CTRL bits (sensors.md §3.4). */
-#define ADIS_IMU_MSC_DR_LINE_DIO2 0x0001u   /* 1 = DIO2, 0 = DIO1 */
-#define ADIS_IMU_MSC_DR_POL_HIGH 0x0002u    /* 1 = active high */
+#define ADIS_IMU_MSC_DR_LINE_DIO2 0x0001u /* 1 = DIO2, 0 = DIO1 */
+#define ADIS_IMU_MSC_DR_POL_HIGH 0x0002u  /* 1 = active high */
 #define ADIS_IMU_MSC_DR_EN 0x0004u
 #define ADIS_IMU_MSC_ACCEL_ORIGIN 0x0040u
 #define ADIS_IMU_MSC_GYRO_G_COMP 0x0080u
 #define ADIS_IMU_MSC_ST_MANUAL_POS 0x0100u
 #define ADIS_IMU_MSC_ST_MANUAL_NEG 0x0200u
-#define ADIS_IMU_MSC_SELF_TEST 0x0400u      /* internal self-test; clears itself when done */
+#define ADIS_IMU_MSC_SELF_TEST 0x0400u /* internal self-test; clears itself when done */
 #define ADIS_IMU_MSC_MEM_TEST 0x0800u
 #define ADIS_IMU_MSC_DEFAULT 0x0006u
 
@@ -192,17 +192,17 @@ enum adis_imu_cmd {
 };
 
 /* DIAG_STAT bits (sensors.md §3.4). Every bit except 7 is an error or alarm (EA). */
-#define ADIS_IMU_DIAG_SUPPLY_LOW 0x0001u     /* supply < 4.75 V */
-#define ADIS_IMU_DIAG_SUPPLY_HIGH 0x0002u    /* supply > 5.25 V */
-#define ADIS_IMU_DIAG_FLASH_UPDATE 0x0004u   /* flash update failed */
-#define ADIS_IMU_DIAG_SPI_FAIL 0x0008u       /* SPI communication failure */
-#define ADIS_IMU_DIAG_OVERRANGE 0x0010u      /* a sensor is over its range */
-#define ADIS_IMU_DIAG_SELF_TEST 0x0020u      /* self-test error */
+#define ADIS_IMU_DIAG_SUPPLY_LOW 0x0001u   /* supply < 4.75 V */
+#define ADIS_IMU_DIAG_SUPPLY_HIGH 0x0002u  /* supply > 5.25 V */
+#define ADIS_IMU_DIAG_FLASH_UPDATE 0x0004u /* flash update failed */
+#define ADIS_IMU_DIAG_SPI_FAIL 0x0008u     /* SPI communication failure */
+#define ADIS_IMU_DIAG_OVERRANGE 0x0010u    /* a sensor is over its range */
+#define ADIS_IMU_DIAG_SELF_TEST 0x0020u    /* self-test error */
 #define ADIS_IMU_DIAG_FLASH_CHECKSUM 0x0040u
-#define ADIS_IMU_DIAG_UNUSED 0x0080u         /* always 0 on a live part: set -> bus fault */
+#define ADIS_IMU_DIAG_UNUSED 0x0080u /* always 0 on a live part: set -> bus fault */
 #define ADIS_IMU_DIAG_ALARM1 0x0100u
 #define ADIS_IMU_DIAG_ALARM2 0x0200u
-#define ADIS_IMU_DIAG_ZGYRO_ST 0x0400u       /* self-test failure of one sensor */
+#define ADIS_IMU_DIAG_ZGYRO_ST 0x0400u /* self-test failure of one sensor */
 #define ADIS_IMU_DIAG_YGYRO_ST 0x0800u
 #define ADIS_IMU_DIAG_XGYRO_ST 0x1000u
 #define ADIS_IMU_DIAG_XACCL_ST 0x2000u
@@ -215,9 +215,9 @@ enum adis_imu_cmd {
 struct adis_imu_diag {
     bool supply_low, supply_high, flash_update_fail, spi_fail, overrange, self_test_fail,
         flash_checksum, alarm1, alarm2;
-    bool gyro_st_fail[3];    /* x, y, z */
-    bool accel_st_fail[3];   /* x, y, z */
-    bool any;                /* any error bit */
+    bool gyro_st_fail[3];  /* x, y, z */
+    bool accel_st_fail[3]; /* x, y, z */
+    bool any;              /* any error bit */
 };
 void adis_imu_diag_decode(uint16_t diag, struct adis_imu_diag *out);
 /* Name of DIAG_STAT bit 0..15 ("supply < 4.75 V", ..., "unused"), "" for bit > 15. */
@@ -259,9 +259,9 @@ const char *adis_imu_diag_bit_name(unsigned bit);
 /* ---------------------------------------------------------------------------------------------
  * Sample rate (SMPL_PRD) and filter/range (SENS_AVG)
  * ------------------------------------------------------------------------------------------- */
-#define ADIS_IMU_SMPL_PRD_TIMEBASE 0x80u   /* bit 7: time base 31 x 0.6104 ms instead of 0.6104 */
+#define ADIS_IMU_SMPL_PRD_TIMEBASE 0x80u /* bit 7: time base 31 x 0.6104 ms instead of 0.6104 */
 #define ADIS_IMU_SMPL_PRD_NS_MASK 0x7Fu
-#define ADIS_IMU_SMPL_PRD_DEFAULT 0x01u    /* 819.2 SPS */
+#define ADIS_IMU_SMPL_PRD_DEFAULT 0x01u /* 819.2 SPS */
 
 /*
  * Sample period in ns (rounded to nearest) for SMPL_PRD[7:0] = smpl_prd:
@@ -281,7 +281,7 @@ enum adis_imu_range {
     ADIS_IMU_RANGE_300 = 4,
 };
 #define ADIS_IMU_SENS_AVG_M_MASK 0x0007u
-#define ADIS_IMU_SENS_AVG_M_MAX 6u          /* N = 2^M taps per Bartlett stage, M <= 6 */
+#define ADIS_IMU_SENS_AVG_M_MAX 6u /* N = 2^M taps per Bartlett stage, M <= 6 */
 #define ADIS_IMU_SENS_AVG_RANGE_SHIFT 8u
 #define ADIS_IMU_SENS_AVG_DEFAULT 0x0402u
 /* [U] recollection: +-150 needs M >= 2, +-75 needs M >= 4; the driver refuses less. */
@@ -324,7 +324,7 @@ int32_t adis_imu_aux_v_q16(int32_t counts);
 #define ADIS_IMU_GYRO_OFF_BITS 13u
 #define ADIS_IMU_GYRO_OFF_MIN (-4096)
 #define ADIS_IMU_GYRO_OFF_MAX 4095
-#define ADIS_IMU_GYRO_OFF_PER_DPS 80   /* offset LSB per deg/s (1 / 0.0125) */
+#define ADIS_IMU_GYRO_OFF_PER_DPS 80 /* offset LSB per deg/s (1 / 0.0125) */
 int16_t adis_imu_gyro_off_from_dps_q16(int32_t dps_q16, bool *saturated);
 int32_t adis_imu_gyro_off_to_dps_q16(int32_t counts);
 
@@ -344,24 +344,34 @@ int32_t adis_imu_accel_off_to_g_q16(int32_t counts, uint32_t lsb_ug);
  * ------------------------------------------------------------------------------------------- */
 enum adis_imu_chan {
     ADIS_IMU_CH_SUPPLY = 0,
-    ADIS_IMU_CH_GYRO_X, ADIS_IMU_CH_GYRO_Y, ADIS_IMU_CH_GYRO_Z,
-    ADIS_IMU_CH_ACCEL_X, ADIS_IMU_CH_ACCEL_Y, ADIS_IMU_CH_ACCEL_Z,
-    ADIS_IMU_CH_MAGN_X, ADIS_IMU_CH_MAGN_Y, ADIS_IMU_CH_MAGN_Z,  /* 1640x only */
-    ADIS_IMU_CH_TEMP0,   /* 1636x XTEMP_OUT, 1640x TEMP_OUT */
-    ADIS_IMU_CH_TEMP1,   /* 1636x YTEMP_OUT */
-    ADIS_IMU_CH_TEMP2,   /* 1636x ZTEMP_OUT */
+    ADIS_IMU_CH_GYRO_X,
+    ADIS_IMU_CH_GYRO_Y,
+    ADIS_IMU_CH_GYRO_Z,
+    ADIS_IMU_CH_ACCEL_X,
+    ADIS_IMU_CH_ACCEL_Y,
+    ADIS_IMU_CH_ACCEL_Z,
+    ADIS_IMU_CH_MAGN_X,
+    ADIS_IMU_CH_MAGN_Y,
+    ADIS_IMU_CH_MAGN_Z, /* 1640x only */
+    ADIS_IMU_CH_TEMP0,  /* 1636x XTEMP_OUT, 1640x TEMP_OUT */
+    ADIS_IMU_CH_TEMP1,  /* 1636x YTEMP_OUT */
+    ADIS_IMU_CH_TEMP2,  /* 1636x ZTEMP_OUT */
     ADIS_IMU_CH_AUX,
     ADIS_IMU_CH_COUNT
 };
 #define ADIS_IMU_CH(c) (1u << (unsigned)(c))
-#define ADIS_IMU_CH_GYROS (ADIS_IMU_CH(ADIS_IMU_CH_GYRO_X) | ADIS_IMU_CH(ADIS_IMU_CH_GYRO_Y) | \
-                           ADIS_IMU_CH(ADIS_IMU_CH_GYRO_Z))
-#define ADIS_IMU_CH_ACCELS (ADIS_IMU_CH(ADIS_IMU_CH_ACCEL_X) | ADIS_IMU_CH(ADIS_IMU_CH_ACCEL_Y) | \
-                            ADIS_IMU_CH(ADIS_IMU_CH_ACCEL_Z))
-#define ADIS_IMU_CH_MAGNS (ADIS_IMU_CH(ADIS_IMU_CH_MAGN_X) | ADIS_IMU_CH(ADIS_IMU_CH_MAGN_Y) | \
-                           ADIS_IMU_CH(ADIS_IMU_CH_MAGN_Z))
-#define ADIS_IMU_CH_TEMPS (ADIS_IMU_CH(ADIS_IMU_CH_TEMP0) | ADIS_IMU_CH(ADIS_IMU_CH_TEMP1) | \
-                           ADIS_IMU_CH(ADIS_IMU_CH_TEMP2))
+#define ADIS_IMU_CH_GYROS                                                \
+    (ADIS_IMU_CH(ADIS_IMU_CH_GYRO_X) | ADIS_IMU_CH(ADIS_IMU_CH_GYRO_Y) | \
+     ADIS_IMU_CH(ADIS_IMU_CH_GYRO_Z))
+#define ADIS_IMU_CH_ACCELS                                                 \
+    (ADIS_IMU_CH(ADIS_IMU_CH_ACCEL_X) | ADIS_IMU_CH(ADIS_IMU_CH_ACCEL_Y) | \
+     ADIS_IMU_CH(ADIS_IMU_CH_ACCEL_Z))
+#define ADIS_IMU_CH_MAGNS                                                \
+    (ADIS_IMU_CH(ADIS_IMU_CH_MAGN_X) | ADIS_IMU_CH(ADIS_IMU_CH_MAGN_Y) | \
+     ADIS_IMU_CH(ADIS_IMU_CH_MAGN_Z))
+#define ADIS_IMU_CH_TEMPS                                              \
+    (ADIS_IMU_CH(ADIS_IMU_CH_TEMP0) | ADIS_IMU_CH(ADIS_IMU_CH_TEMP1) | \
+     ADIS_IMU_CH(ADIS_IMU_CH_TEMP2))
 #define ADIS_IMU_CH_ALL ((1u << (unsigned)ADIS_IMU_CH_COUNT) - 1u)
 
 /*
@@ -384,52 +394,52 @@ struct adis_imu_phys {
     int32_t gyro_dps[3];
     int32_t accel_g[3];
     int32_t magn_gauss[3];
-    int32_t temp_c[3];      /* 1640x: temp_c[0] only */
+    int32_t temp_c[3]; /* 1640x: temp_c[0] only */
     int32_t supply_v;
     int32_t aux_v;
-    uint16_t valid;         /* copied from the sample */
+    uint16_t valid; /* copied from the sample */
 };
 
 /* ---------------------------------------------------------------------------------------------
  * Driver
  * ------------------------------------------------------------------------------------------- */
 enum adis_imu_dr_line {
-    ADIS_IMU_DR_DIO1 = 0,   /* factory default */
+    ADIS_IMU_DR_DIO1 = 0, /* factory default */
     ADIS_IMU_DR_DIO2 = 1,
 };
 
 struct adis_imu_cfg {
-    const struct hal *hal;        /* time, delays, data-ready interrupt */
-    const struct spi_bus *bus;    /* the SPI bus the part is on */
-    hal_pin_t cs;                 /* chip select (active low) */
-    uint8_t variant;              /* enum adis_imu_variant expected, or ADIS_IMU_ANY */
-    hal_pin_t dr_pin;             /* host pin wired to the part's DR line; HAL_PIN_NONE: none */
-    uint8_t dr_line;              /* enum adis_imu_dr_line: which DIO the part drives */
-    bool dr_active_low;           /* false: active high (factory default) */
-    bool reset_at_init;           /* software reset (and its wait) before identification */
-    bool self_test_at_init;       /* run the internal self-test; a failure fails init */
+    const struct hal *hal;     /* time, delays, data-ready interrupt */
+    const struct spi_bus *bus; /* the SPI bus the part is on */
+    hal_pin_t cs;              /* chip select (active low) */
+    uint8_t variant;           /* enum adis_imu_variant expected, or ADIS_IMU_ANY */
+    hal_pin_t dr_pin;          /* host pin wired to the part's DR line; HAL_PIN_NONE: none */
+    uint8_t dr_line;           /* enum adis_imu_dr_line: which DIO the part drives */
+    bool dr_active_low;        /* false: active high (factory default) */
+    bool reset_at_init;        /* software reset (and its wait) before identification */
+    bool self_test_at_init;    /* run the internal self-test; a failure fails init */
 };
 
 struct adis_imu {
     struct adis_imu_cfg cfg;
     struct spi_dev dev;
     const struct adis_imu_variant_info *info; /* the identified part (NULL until init passed) */
-    uint16_t found_id;            /* PROD_ID read at init (also when it was wrong) */
-    uint8_t found_variant;        /* enum adis_imu_variant of found_id, or ADIS_IMU_UNKNOWN */
-    bool id_known;                /* found_id/found_variant hold what init read */
-    bool ready;                   /* init passed */
-    bool low_power;               /* SCLK/stall limits of low-power mode in force */
-    bool resync_pending;          /* a reset was sent: re-read the mode registers first */
-    bool dr_enabled;              /* data-ready configured and attached */
-    uint8_t dr_line;              /* enum adis_imu_dr_line in force */
+    uint16_t found_id;                        /* PROD_ID read at init (also when it was wrong) */
+    uint8_t found_variant; /* enum adis_imu_variant of found_id, or ADIS_IMU_UNKNOWN */
+    bool id_known;         /* found_id/found_variant hold what init read */
+    bool ready;            /* init passed */
+    bool low_power;        /* SCLK/stall limits of low-power mode in force */
+    bool resync_pending;   /* a reset was sent: re-read the mode registers first */
+    bool dr_enabled;       /* data-ready configured and attached */
+    uint8_t dr_line;       /* enum adis_imu_dr_line in force */
     bool dr_active_low;
-    uint16_t smpl_prd;            /* cached register values */
+    uint16_t smpl_prd; /* cached register values */
     uint16_t sens_avg;
     uint16_t msc_ctrl;
-    uint16_t last_diag;           /* last DIAG_STAT read (it clears on read [U]) */
-    uint16_t init_diag;           /* DIAG_STAT read at init (power-up flags), not an error */
-    uint64_t busy_until_ns;       /* the part ignores the bus until then */
-    struct adis_dr dr;            /* data-ready edges seen and consumed (wait_dr) */
+    uint16_t last_diag;     /* last DIAG_STAT read (it clears on read [U]) */
+    uint16_t init_diag;     /* DIAG_STAT read at init (power-up flags), not an error */
+    uint64_t busy_until_ns; /* the part ignores the bus until then */
+    struct adis_dr dr;      /* data-ready edges seen and consumed (wait_dr) */
     /* statistics */
     uint32_t bursts, reg_reads, bus_errors, device_errors, stale_reads, timeouts;
 };

@@ -59,7 +59,7 @@ enum sca3000_variant {
     SCA3000_E02 = 1,
     SCA3000_E04 = 2,
     SCA3000_E05 = 3,
-    SCA3000_E01 = 4,   /* named so that a caller can ask for it: no source describes it, so
+    SCA3000_E01 = 4, /* named so that a caller can ask for it: no source describes it, so
                           sca3000_init() rejects it with INC_ERR_UNSUPPORTED */
 };
 
@@ -86,18 +86,18 @@ enum sca3000_variant {
 
 #define SCA3000_CMD_WRITE 0x02u
 
-#define SCA3000_STATUS_UNLOCKED 0x20u  /* bit5: 1 = indirect registers unlocked (Linux reading) */
-#define SCA3000_STATUS_EEPROM 0x02u    /* bit1: EEPROM checksum error */
-#define SCA3000_STATUS_FRAME 0x01u     /* bit0: the part saw a corrupt SPI frame */
+#define SCA3000_STATUS_UNLOCKED 0x20u /* bit5: 1 = indirect registers unlocked (Linux reading) */
+#define SCA3000_STATUS_EEPROM 0x02u   /* bit1: EEPROM checksum error */
+#define SCA3000_STATUS_FRAME 0x01u    /* bit0: the part saw a corrupt SPI frame */
 
 #define SCA3000_MODE_BUF_EN 0x80u
 #define SCA3000_MODE_BUF_8BIT 0x40u
 #define SCA3000_MODE_FFD_EN 0x10u
-#define SCA3000_MODE_PROTECT 0x28u     /* reserved: kept as read */
+#define SCA3000_MODE_PROTECT 0x28u /* reserved: kept as read */
 #define SCA3000_MODE_MEAS_MASK 0x03u
 
-#define SCA3000_INT_RING_3_4 0x80u     /* INT_STATUS / INT_MASK: ring 3/4 full */
-#define SCA3000_INT_RING_1_2 0x40u     /* ring 1/2 full */
+#define SCA3000_INT_RING_3_4 0x80u /* INT_STATUS / INT_MASK: ring 3/4 full */
+#define SCA3000_INT_RING_1_2 0x40u /* ring 1/2 full */
 #define SCA3000_INT_FREE_FALL 0x08u
 #define SCA3000_INT_MOTION_Y 0x04u
 #define SCA3000_INT_MOTION_X 0x02u
@@ -107,7 +107,7 @@ enum sca3000_variant {
 
 /* ---- indirect registers (CTRL_SEL values, sensors.md 1.5) ----------------------------------- */
 
-#define SCA3000_IND_I2C_DISABLE 0x01u  /* D01 only */
+#define SCA3000_IND_I2C_DISABLE 0x01u /* D01 only */
 #define SCA3000_IND_MD_CTRL 0x02u
 #define SCA3000_IND_MD_Y_TH 0x03u
 #define SCA3000_IND_MD_X_TH 0x04u
@@ -132,8 +132,8 @@ enum sca3000_variant {
 #define SCA3000_STALL_NS 10000u
 
 /* The spi_timing initializer with the values above (gap between bytes of one period: none). */
-#define SCA3000_SPI_TIMING_INIT                                                              \
-    {                                                                                        \
+#define SCA3000_SPI_TIMING_INIT                                                               \
+    {                                                                                         \
         SCA3000_SCLK_PERIOD_NS, SCA3000_CS_SETUP_NS, SCA3000_CS_HOLD_NS, SCA3000_STALL_NS, 0u \
     }
 
@@ -151,19 +151,19 @@ enum sca3000_variant {
 
 enum sca3000_mode {
     SCA3000_MODE_NORMAL = 0,
-    SCA3000_MODE_OPTION1 = 1,  /* D01: low-pass bypassed; E02/E04/E05: narrow band, ODR halved */
-    SCA3000_MODE_OPTION2 = 2,  /* E04/E05 only: wide band, 400 Hz */
-    SCA3000_MODE_MOTION = 3,   /* motion detection: acceleration reads fail with INC_ERR_STATE */
+    SCA3000_MODE_OPTION1 = 1, /* D01: low-pass bypassed; E02/E04/E05: narrow band, ODR halved */
+    SCA3000_MODE_OPTION2 = 2, /* E04/E05 only: wide band, 400 Hz */
+    SCA3000_MODE_MOTION = 3,  /* motion detection: acceleration reads fail with INC_ERR_STATE */
 };
 
 struct sca3000_cfg {
     const struct spi_bus *bus;
-    struct spi_dev_cfg spi;    /* cs; mode SPI_MODE_3 (0 accepted); bits 8;
+    struct spi_dev_cfg spi; /* cs; mode SPI_MODE_3 (0 accepted); bits 8;
                                   timing SCA3000_SPI_TIMING_INIT */
     enum sca3000_variant variant;
-    uint8_t expected_revid;    /* 0: SCA3000_REVID_DEFAULT; 0xFF is not allowed */
-    const struct hal *hal;     /* for the INT line; may be NULL when int_pin is HAL_PIN_NONE */
-    hal_pin_t int_pin;         /* the part's INT output, or HAL_PIN_NONE */
+    uint8_t expected_revid; /* 0: SCA3000_REVID_DEFAULT; 0xFF is not allowed */
+    const struct hal *hal;  /* for the INT line; may be NULL when int_pin is HAL_PIN_NONE */
+    hal_pin_t int_pin;      /* the part's INT output, or HAL_PIN_NONE */
 };
 
 struct sca3000 {
@@ -172,12 +172,12 @@ struct sca3000 {
     uint8_t expected_revid;
     const struct hal *hal;
     hal_pin_t int_pin;
-    bool ready;                /* init succeeded */
-    uint8_t revid;             /* REVID read at the last init (also when it failed) */
-    uint8_t status;            /* STATUS byte of the last check */
-    uint8_t mode_reg;          /* MODE as last written and verified */
-    uint8_t int_mask;          /* INT_MASK as last written and verified */
-    bool int_armed;            /* sca3000_int_config() done */
+    bool ready;       /* init succeeded */
+    uint8_t revid;    /* REVID read at the last init (also when it failed) */
+    uint8_t status;   /* STATUS byte of the last check */
+    uint8_t mode_reg; /* MODE as last written and verified */
+    uint8_t int_mask; /* INT_MASK as last written and verified */
+    bool int_armed;   /* sca3000_int_config() done */
     bool int_active_high;
     volatile bool int_pending; /* set by the INT callback */
     /* statistics */
@@ -186,8 +186,8 @@ struct sca3000 {
 
 /* One sample set. temp_valid is false on variants without a temperature output. */
 struct sca3000_sample {
-    int16_t xyz[3];            /* counts, 13-bit */
-    uint16_t temp_raw;         /* 9-bit counts (D01) */
+    int16_t xyz[3];    /* counts, 13-bit */
+    uint16_t temp_raw; /* 9-bit counts (D01) */
     bool temp_valid;
 };
 

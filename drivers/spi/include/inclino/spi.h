@@ -59,9 +59,9 @@ struct spi_timing {
 };
 
 struct spi_dev_cfg {
-    hal_pin_t cs;            /* chip select, active low */
-    uint8_t mode;            /* enum spi_mode */
-    uint8_t bits;            /* 8 or 16 */
+    hal_pin_t cs; /* chip select, active low */
+    uint8_t mode; /* enum spi_mode */
+    uint8_t bits; /* 8 or 16 */
     struct spi_timing timing;
 };
 
@@ -86,9 +86,9 @@ struct spi_bus {
 struct spi_dev {
     const struct spi_bus *bus;
     struct spi_dev_cfg cfg;
-    uint64_t cs_release_ns;  /* when CS last rose (for the stall between transfers) */
-    bool released_once;      /* cs_release_ns is meaningful */
-    uint32_t transfers;      /* statistics */
+    uint64_t cs_release_ns; /* when CS last rose (for the stall between transfers) */
+    bool released_once;     /* cs_release_ns is meaningful */
+    uint32_t transfers;     /* statistics */
 };
 
 /* 0 when the timing is usable (period >= 2 ns), INC_ERR_NULL or INC_ERR_INVAL otherwise. */

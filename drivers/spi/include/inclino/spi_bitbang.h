@@ -44,13 +44,13 @@ struct spi_bitbang_cfg {
 
 struct spi_bitbang {
     struct spi_bitbang_cfg cfg;
-    struct spi_bus bus;      /* the interface this engine serves; pass &bb.bus to spi_dev_init */
+    struct spi_bus bus; /* the interface this engine serves; pass &bb.bus to spi_dev_init */
     bool sclk_level;
     bool mosi_level;
-    bool pins_known;         /* sclk_level/mosi_level reflect the pins */
-    bool released_any;       /* last_cs/last_release_ns are meaningful */
-    hal_pin_t last_cs;       /* the CS that rose last, and when: a device initialised again */
-    uint64_t last_release_ns;/* on the same CS still gets its stall */
+    bool pins_known;          /* sclk_level/mosi_level reflect the pins */
+    bool released_any;        /* last_cs/last_release_ns are meaningful */
+    hal_pin_t last_cs;        /* the CS that rose last, and when: a device initialised again */
+    uint64_t last_release_ns; /* on the same CS still gets its stall */
 };
 
 /*

@@ -79,9 +79,9 @@ struct app_budget {
 };
 
 struct app_cfg {
-    uint32_t avg_n;             /* samples per estimate, a multiple of still.window, 1..2^31 */
-    struct still_cfg still;     /* in the sample units: Q16 deg/s and Q16 g */
-    struct slope_cfg slope;     /* method, axes, limits; its budget is composed per estimate
+    uint32_t avg_n;         /* samples per estimate, a multiple of still.window, 1..2^31 */
+    struct still_cfg still; /* in the sample units: Q16 deg/s and Q16 g */
+    struct slope_cfg slope; /* method, axes, limits; its budget is composed per estimate
                                    (the one given here is ignored) */
     struct app_budget budget;
     fx_q16_t temp_default_c;    /* temperature assumed for a part without temperature output */
@@ -96,29 +96,31 @@ struct app_cfg {
 
 /* Why an application result is not valid, besides the slope flags (app_result.flags). */
 #define APP_F_NOT_CALIBRATED 0x01u /* no valid calibration record for this sensor */
-#define APP_F_TEMP_UNCOMP 0x02u    /* temperature drift not compensated (not an error by
+#define APP_F_TEMP_UNCOMP \
+    0x02u                     /* temperature drift not compensated (not an error by
                                       itself: the budget took temp_uncomp_g) */
-#define APP_F_SENSOR 0x04u         /* more read errors in the block than max_sensor_errors */
-#define APP_F_SATURATED 0x08u      /* a sample of the block was at the end of its range */
-#define APP_F_NOT_STILL 0x10u      /* a stillness window of the block was not quiet, or the
+#define APP_F_SENSOR 0x04u    /* more read errors in the block than max_sensor_errors */
+#define APP_F_SATURATED 0x08u /* a sample of the block was at the end of its range */
+#define APP_F_NOT_STILL \
+    0x10u /* a stillness window of the block was not quiet, or the
                                       detector was not at rest at its end */
 
 /* One estimate (one block of avg_n samples). */
 struct app_result {
-    bool valid;                /* slope.valid, and neither APP_F_SENSOR nor APP_F_SATURATED */
-    uint32_t flags;            /* APP_F_* */
-    struct slope_result slope; /* estimate, bound, SLOPE_F_* flags */
-    struct slope_budget budget;/* the budget the bound was computed with */
-    fx_q16_t accel_g[3];       /* calibrated mean acceleration */
-    fx_q16_t gyro_dps[3];      /* calibrated mean rate */
-    fx_q16_t temp_c;           /* mean temperature (the default when the part has none) */
-    fx_q16_t sigma_meas_g;     /* rms per sample measured on the slope axes (largest window) */
-    uint32_t n;                /* samples averaged */
-    uint32_t missed;           /* part samples lost (missed data-ready) during the block */
-    uint32_t sensor_errors;    /* failed reads during the block */
-    uint32_t motion_windows;   /* stillness windows of the block that were not quiet */
-    uint8_t still_state;       /* enum still_state at the end of the block */
-    int cal_status;            /* calstore_load's status at app_init (0: calibrated) */
+    bool valid;                 /* slope.valid, and neither APP_F_SENSOR nor APP_F_SATURATED */
+    uint32_t flags;             /* APP_F_* */
+    struct slope_result slope;  /* estimate, bound, SLOPE_F_* flags */
+    struct slope_budget budget; /* the budget the bound was computed with */
+    fx_q16_t accel_g[3];        /* calibrated mean acceleration */
+    fx_q16_t gyro_dps[3];       /* calibrated mean rate */
+    fx_q16_t temp_c;            /* mean temperature (the default when the part has none) */
+    fx_q16_t sigma_meas_g;      /* rms per sample measured on the slope axes (largest window) */
+    uint32_t n;                 /* samples averaged */
+    uint32_t missed;            /* part samples lost (missed data-ready) during the block */
+    uint32_t sensor_errors;     /* failed reads during the block */
+    uint32_t motion_windows;    /* stillness windows of the block that were not quiet */
+    uint8_t still_state;        /* enum still_state at the end of the block */
+    int cal_status;             /* calstore_load's status at app_init (0: calibrated) */
 };
 
 /* A calibrated sample, as app_step passes it on (e.g. to the tilt filter). */
@@ -126,25 +128,25 @@ struct app_corrected {
     fx_q16_t accel_g[3];
     fx_q16_t gyro_dps[3];
     fx_q16_t temp_c;
-    uint32_t flags;            /* APP_S_* of the sample */
+    uint32_t flags; /* APP_S_* of the sample */
 };
 
 struct app {
     struct app_cfg cfg;
     struct app_sensor sensor;
-    struct calrec_binding id;  /* the sensor's identity, read at init */
-    struct calrec rec;         /* the record in use (safe default when uncalibrated) */
+    struct calrec_binding id; /* the sensor's identity, read at init */
+    struct calrec rec;        /* the record in use (safe default when uncalibrated) */
     struct cal_acc acc;
     struct cal_gyro gyro;
     struct still still;
-    fx_q16_t k_sigma;          /* noise factor from the lifetime exceedance rule */
-    int cal_status;            /* calstore_load status */
-    bool temp_set;             /* the models were evaluated at least once */
-    fx_q16_t temp_applied;     /* temperature of that evaluation */
+    fx_q16_t k_sigma;      /* noise factor from the lifetime exceedance rule */
+    int cal_status;        /* calstore_load status */
+    bool temp_set;         /* the models were evaluated at least once */
+    fx_q16_t temp_applied; /* temperature of that evaluation */
     /* the block in progress */
     struct fx_sum sum_a[3], sum_g[3], sum_t;
     uint32_t n, missed, errors, motion_start, flags;
-    uint64_t var_max;          /* largest window variance on the slope axes, Q16 g^2 */
+    uint64_t var_max;            /* largest window variance on the slope axes, Q16 g^2 */
     struct cal_avg eol_a, eol_g; /* app_eol_face's sums (here, not on the stack: the M0+ image
                                     has 1 KiB of stack) */
     bool ready;
@@ -214,10 +216,10 @@ void app_restart(struct app *a);
 /* A still face: raw (uncalibrated, nominal-scaled) means, exact to 0.5 LSB. */
 struct app_face {
     fx_q16_t accel_g[3];
-    fx_q16_t gyro_dps[3];      /* 0 for a part without gyro */
-    fx_q16_t temp_c;           /* 0 for a part without temperature */
-    uint32_t n;                /* samples averaged */
-    uint32_t flags;            /* APP_S_HAVE_GYRO / APP_S_HAVE_TEMP as the part has them */
+    fx_q16_t gyro_dps[3]; /* 0 for a part without gyro */
+    fx_q16_t temp_c;      /* 0 for a part without temperature */
+    uint32_t n;           /* samples averaged */
+    uint32_t flags;       /* APP_S_HAVE_GYRO / APP_S_HAVE_TEMP as the part has them */
 };
 
 /*

@@ -26,7 +26,7 @@ extern "C" {
  * part on the 1636x (SERIAL_NUM, LOT_ID1/2), 0 on the 1640x (they have none).
  */
 struct app_adis {
-    struct adis_imu *imu;  /* initialised driver with data-ready configured */
+    struct adis_imu *imu; /* initialised driver with data-ready configured */
     uint32_t reads, stale_retries;
 };
 

@@ -28,10 +28,10 @@ extern "C" {
  * (CALREC_SCA3000_D01 ...), revision = REVID read at init.
  */
 struct app_sca3000 {
-    struct sca3000 *dev;   /* initialised driver, normal measurement mode */
+    struct sca3000 *dev; /* initialised driver, normal measurement mode */
     const struct hal *hal;
-    uint32_t period_ns;    /* output period of the current mode, ns (rounded up) */
-    uint64_t next_ns;      /* earliest time of the next read */
+    uint32_t period_ns; /* output period of the current mode, ns (rounded up) */
+    uint64_t next_ns;   /* earliest time of the next read */
     bool started;
     uint32_t reads;
 };

@@ -24,18 +24,18 @@ extern "C" {
 #endif
 
 /* What a sample holds (struct app_sample.flags). */
-#define APP_S_HAVE_GYRO 0x01u   /* gyro_dps is measured (else 0: an accelerometer-only part) */
-#define APP_S_HAVE_TEMP 0x02u   /* temp_c is measured (else 0: a part without a temperature output) */
-#define APP_S_ACCEL_SAT 0x04u   /* an accelerometer axis is at the end of its output range */
-#define APP_S_GYRO_SAT 0x08u    /* a gyro axis is at the end of its output range */
+#define APP_S_HAVE_GYRO 0x01u /* gyro_dps is measured (else 0: an accelerometer-only part) */
+#define APP_S_HAVE_TEMP 0x02u /* temp_c is measured (else 0: a part without a temperature output) */
+#define APP_S_ACCEL_SAT 0x04u /* an accelerometer axis is at the end of its output range */
+#define APP_S_GYRO_SAT 0x08u  /* a gyro axis is at the end of its output range */
 
 struct app_sample {
-    fx_q16_t accel_g[3];   /* g, Q16, nominal sensitivity, sensor frame x y z */
-    fx_q16_t gyro_dps[3];  /* deg/s, Q16 (0 without APP_S_HAVE_GYRO) */
-    fx_q16_t temp_c;       /* degC, Q16 (0 without APP_S_HAVE_TEMP) */
-    uint32_t flags;        /* APP_S_* */
-    uint32_t missed;       /* samples of the part lost before this one (missed data-ready) */
-    uint64_t t_ns;         /* HAL time of the read */
+    fx_q16_t accel_g[3];  /* g, Q16, nominal sensitivity, sensor frame x y z */
+    fx_q16_t gyro_dps[3]; /* deg/s, Q16 (0 without APP_S_HAVE_GYRO) */
+    fx_q16_t temp_c;      /* degC, Q16 (0 without APP_S_HAVE_TEMP) */
+    uint32_t flags;       /* APP_S_* */
+    uint32_t missed;      /* samples of the part lost before this one (missed data-ready) */
+    uint64_t t_ns;        /* HAL time of the read */
 };
 
 struct app_sensor_ops {

@@ -57,7 +57,7 @@ void rt_fault(uint32_t cause, uintptr_t fault_sp);
 extern uint32_t __data_load__[];  /* load address of .data in FLASH */
 extern uint32_t __data_start__[]; /* .data in RAM, word aligned */
 extern uint32_t __data_end__[];
-extern uint32_t __bss_start__[];  /* .bss, word aligned */
+extern uint32_t __bss_start__[]; /* .bss, word aligned */
 extern uint32_t __bss_end__[];
 extern uint32_t __stack_bottom__[]; /* lowest address of the stack region */
 extern uint32_t __stack_top__[];    /* initial stack pointer (one past the highest word) */

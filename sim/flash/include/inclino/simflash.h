@@ -49,9 +49,9 @@ extern "C" {
 #endif
 
 struct simflash_geometry {
-    uint32_t page_size;   /* erase page, bytes, > 0, a multiple of prog_size */
-    uint32_t page_count;  /* > 0; page_size * page_count must fit in uint32_t */
-    uint32_t prog_size;   /* program unit, bytes, > 0 */
+    uint32_t page_size;  /* erase page, bytes, > 0, a multiple of prog_size */
+    uint32_t page_count; /* > 0; page_size * page_count must fit in uint32_t */
+    uint32_t prog_size;  /* program unit, bytes, > 0 */
 };
 
 enum simflash_reprogram {
@@ -73,13 +73,13 @@ enum simflash_op {
 
 /* Counters since init or simflash_reset_stats(). Steps that were cut are not counted as done. */
 struct simflash_stats {
-    uint32_t erases;       /* completed page erases */
-    uint32_t prog_units;   /* completed program units */
-    uint32_t prog_calls;   /* program calls accepted */
-    uint32_t read_calls;   /* read calls served */
-    uint32_t read_bytes;   /* bytes read */
-    uint32_t reprograms;   /* program units that were not fully erased beforehand */
-    uint32_t failed;       /* calls that returned an error (power off, bad args, injected) */
+    uint32_t erases;     /* completed page erases */
+    uint32_t prog_units; /* completed program units */
+    uint32_t prog_calls; /* program calls accepted */
+    uint32_t read_calls; /* read calls served */
+    uint32_t read_bytes; /* bytes read */
+    uint32_t reprograms; /* program units that were not fully erased beforehand */
+    uint32_t failed;     /* calls that returned an error (power off, bad args, injected) */
 };
 
 /* State. Fields are private to simflash.c; use the functions. */
@@ -89,12 +89,12 @@ struct simflash {
     struct simflash_geometry geo;
     enum simflash_reprogram reprogram;
     bool powered;
-    uint32_t steps;        /* program/erase steps begun since init */
-    uint32_t cut_at;       /* step number that is interrupted; 0 = none armed */
+    uint32_t steps;  /* program/erase steps begun since init */
+    uint32_t cut_at; /* step number that is interrupted; 0 = none armed */
     enum simflash_cut_mode cut_mode;
     uint32_t rng;
-    uint32_t op_calls[3];  /* calls per enum simflash_op since init */
-    uint32_t fail_at[3];   /* op_calls value that fails with INC_ERR_IO; 0 = none */
+    uint32_t op_calls[3]; /* calls per enum simflash_op since init */
+    uint32_t fail_at[3];  /* op_calls value that fails with INC_ERR_IO; 0 = none */
     bool stuck;
     uint32_t stuck_addr;
     uint8_t stuck_mask;
@@ -105,7 +105,8 @@ struct simflash {
  * Set up f over mem (at least page_size * page_count bytes) and erase it all (factory state:
  * 0xFF), powered, no faults armed. INC_ERR_NULL; INC_ERR_INVAL for a bad geometry or mem_size.
  */
-int simflash_init(struct simflash *f, uint8_t *mem, size_t mem_size, const struct simflash_geometry *geo);
+int simflash_init(struct simflash *f, uint8_t *mem, size_t mem_size,
+                  const struct simflash_geometry *geo);
 
 /* Choose the reprogram behaviour (see above). */
 void simflash_set_reprogram(struct simflash *f, enum simflash_reprogram mode);
@@ -125,7 +126,8 @@ extern const struct calstore_flash_ops simflash_calstore_ops;
 uint32_t simflash_steps(const struct simflash *f);
 
 /* Arm a cut on the n-th step from now (n >= 1), else INC_ERR_INVAL. seed drives CUT_TORN. */
-int simflash_cut_power_at(struct simflash *f, uint32_t n, enum simflash_cut_mode mode, uint32_t seed);
+int simflash_cut_power_at(struct simflash *f, uint32_t n, enum simflash_cut_mode mode,
+                          uint32_t seed);
 
 /* Power returns (a reboot): operations work again; any armed cut is disarmed. */
 void simflash_power_on(struct simflash *f);

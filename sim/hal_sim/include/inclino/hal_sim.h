@@ -33,14 +33,14 @@ struct hal_sim_irq {
     enum hal_edge edge;
     hal_irq_cb cb;
     void *arg;
-    bool pending;              /* edge seen inside a critical section */
+    bool pending; /* edge seen inside a critical section */
 };
 
 struct hal_sim {
     struct sim_clock *clk;
     struct sim_pinbus *bus;
     uint32_t crit_depth;
-    uint32_t fired;            /* callbacks run since the last irq_wait returned */
+    uint32_t fired; /* callbacks run since the last irq_wait returned */
     struct hal_sim_irq irq[HAL_SIM_MAX_IRQS];
     /* statistics for benchmarks */
     uint64_t pin_writes, pin_reads, delays;

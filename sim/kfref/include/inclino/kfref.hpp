@@ -24,20 +24,34 @@ extern "C" {
 #include "inclino/tilt.h"
 }
 
-namespace inclino::ref {
+namespace inclino::ref
+{
 
 // P format (kf.h) <-> raw^2, and Q16 P format <-> unit^2.
-inline double p_to_raw2(int64_t p) { return static_cast<double>(p) / 65536.0; }
-inline double p_to_unit2(int64_t p) { return static_cast<double>(p) / 281474976710656.0; }  // 2^48
-inline double q30(int32_t v) { return static_cast<double>(v) / 1073741824.0; }
-inline double q16(int32_t v) { return static_cast<double>(v) / 65536.0; }
+inline double p_to_raw2(int64_t p)
+{
+    return static_cast<double>(p) / 65536.0;
+}
+inline double p_to_unit2(int64_t p)
+{
+    return static_cast<double>(p) / 281474976710656.0;
+} // 2^48
+inline double q30(int32_t v)
+{
+    return static_cast<double>(v) / 1073741824.0;
+}
+inline double q16(int32_t v)
+{
+    return static_cast<double>(v) / 65536.0;
+}
 // dt as the firmware quantises it: round(ns * 2^30 / 1e9) / 2^30 seconds.
 double dt_seconds(uint32_t ns);
 
-class KfRef {
-public:
-    Eigen::VectorXd x;  // raw
-    Eigen::MatrixXd P;  // raw^2
+class KfRef
+{
+  public:
+    Eigen::VectorXd x; // raw
+    Eigen::MatrixXd P; // raw^2
 
     void init(const Eigen::VectorXd &x0, const Eigen::MatrixXd &p0);
     // (1), (2)
@@ -51,21 +65,30 @@ public:
 struct AdaptParams {
     unsigned window = 8;
     double C = 0, D = 0, A = 0, B = 0, p0 = 0;
-    static AdaptParams from_fixed(const kf_adapt_config &c);  // Q16 samples
+    static AdaptParams from_fixed(const kf_adapt_config &c); // Q16 samples
 };
 
-class AdaptRef {
-public:
-    explicit AdaptRef(const AdaptParams &p) : p_(p) {}
+class AdaptRef
+{
+  public:
+    explicit AdaptRef(const AdaptParams &p) : p_(p)
+    {
+    }
     struct Step {
         double dz = 0, Q = 0, R = 0, K = 0;
     };
     double process(double z, Step *st = nullptr);
     double coast();
-    double estimate() const { return x_; }
-    double variance() const { return P_; }
+    double estimate() const
+    {
+        return x_;
+    }
+    double variance() const
+    {
+        return P_;
+    }
 
-private:
+  private:
     AdaptParams p_;
     std::deque<double> win_;
     double x_ = 0, P_ = 0;
@@ -89,17 +112,18 @@ struct TiltOut {
     bool valid = false;
 };
 
-class TiltRef {
-public:
+class TiltRef
+{
+  public:
     explicit TiltRef(const TiltParams &p);
     // accel in g, gyro in deg/s, flags TILT_IN_*, dt in seconds (use dt_seconds()).
     TiltOut step(const double accel[3], const double gyro[3], uint32_t in_flags, double dt);
     static void accel_angles(const double a[3], double *roll, double *pitch);
 
-private:
+  private:
     TiltParams p_;
     struct Axis {
-        Eigen::Vector2d x{0, 0};  // angle, bias (KF2); seed forms use x(0) and off
+        Eigen::Vector2d x{0, 0}; // angle, bias (KF2); seed forms use x(0) and off
         Eigen::Matrix2d P = Eigen::Matrix2d::Zero();
         double off = 0;
     } ax_[2];
@@ -107,6 +131,6 @@ private:
     void start(int i, double angle);
 };
 
-}  // namespace inclino::ref
+} // namespace inclino::ref
 
-#endif  // INCLINO_KFREF_HPP
+#endif // INCLINO_KFREF_HPP

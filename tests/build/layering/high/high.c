@@ -1,3 +1,6 @@
 /* high.c - a module of the layering test (tests/build/layering). */
 int layering_high(void);
-int layering_high(void) { return 2; }
+int layering_high(void)
+{
+    return 2;
+}

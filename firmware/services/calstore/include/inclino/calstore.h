@@ -60,20 +60,21 @@ struct calstore_flash_ops {
     int (*erase)(void *ctx, uint32_t addr);
 };
 
-#define CALSTORE_PROG_MAX 32u     /* largest supported program granularity, bytes */
-#define CALSTORE_SLOT_MAX 0x01000000u /* largest slot, bytes (16 MiB; keeps offsets far from overflow) */
-#define CALSTORE_ERASED 0xFFu     /* the only supported erased byte value (NOR flash) */
+#define CALSTORE_PROG_MAX 32u /* largest supported program granularity, bytes */
+#define CALSTORE_SLOT_MAX \
+    0x01000000u               /* largest slot, bytes (16 MiB; keeps offsets far from overflow) */
+#define CALSTORE_ERASED 0xFFu /* the only supported erased byte value (NOR flash) */
 #define CALSTORE_COMMIT 0xC0A1E5CAu /* commit word: the slot's save completed */
 
 /* Configuration, copied into the store by calstore_init. */
 struct calstore_config {
     const struct calstore_flash_ops *ops;
-    void *ctx;                /* passed back to every ops call */
-    uint32_t page_size;       /* erase page, bytes; a multiple of prog_size */
-    uint32_t prog_size;       /* program granularity, bytes: a power of two, 1..CALSTORE_PROG_MAX */
-    uint8_t erased_value;     /* value of an erased byte; must be CALSTORE_ERASED */
-    uint32_t slot_addr[2];    /* first byte of each slot, multiples of page_size */
-    uint32_t slot_size;       /* bytes per slot: a multiple of page_size, at least
+    void *ctx;             /* passed back to every ops call */
+    uint32_t page_size;    /* erase page, bytes; a multiple of prog_size */
+    uint32_t prog_size;    /* program granularity, bytes: a power of two, 1..CALSTORE_PROG_MAX */
+    uint8_t erased_value;  /* value of an erased byte; must be CALSTORE_ERASED */
+    uint32_t slot_addr[2]; /* first byte of each slot, multiples of page_size */
+    uint32_t slot_size;    /* bytes per slot: a multiple of page_size, at least
                                  calstore_slot_min_size(prog_size, page_size), at most
                                  CALSTORE_SLOT_MAX; the two slots must not overlap */
 };
@@ -81,23 +82,23 @@ struct calstore_config {
 /* The store's state: caller-allocated, fixed size. Fields are private to calstore.c. */
 struct calstore {
     struct calstore_config cfg;
-    uint32_t commit_off;      /* offset of the commit unit in a slot for a version-2 image */
-    uint32_t init_magic;      /* set by calstore_init; guards use of an uninitialised store */
+    uint32_t commit_off; /* offset of the commit unit in a slot for a version-2 image */
+    uint32_t init_magic; /* set by calstore_init; guards use of an uninitialised store */
     uint8_t buf[CALREC_IMAGE_SIZE + CALSTORE_PROG_MAX]; /* image buffer (padded to prog_size) */
 };
 
 /* Result of one slot as judged by calstore_load / calstore_save. */
 struct calstore_slot_info {
-    int status;               /* INC_OK (valid), or the load status codes listed above */
-    bool intact;              /* committed and CRC-correct (any version, any binding) */
-    uint32_t seq;             /* its sequence number when intact, else 0 */
+    int status;   /* INC_OK (valid), or the load status codes listed above */
+    bool intact;  /* committed and CRC-correct (any version, any binding) */
+    uint32_t seq; /* its sequence number when intact, else 0 */
 };
 
 /* What a load or save saw and did (optional output). */
 struct calstore_info {
     struct calstore_slot_info slot[2];
-    int used_slot;            /* load: slot the record came from; save: slot written; -1 none */
-    uint32_t seq;             /* sequence number of that record */
+    int used_slot; /* load: slot the record came from; save: slot written; -1 none */
+    uint32_t seq;  /* sequence number of that record */
 };
 
 /*

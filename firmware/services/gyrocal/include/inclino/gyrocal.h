@@ -63,13 +63,13 @@ enum gyrocal_mode {
 /* Outcome of a run (also in the result when the return code is not 0). */
 enum gyrocal_reason {
     GYROCAL_DONE = 0,
-    GYROCAL_SATURATED,          /* done; an offset is at a register limit (INC_ERR_RANGE) */
-    GYROCAL_REFUSED_MOVING,     /* not at rest when asked (INC_ERR_MOTION): nothing written */
-    GYROCAL_REFUSED_THERMAL,    /* temperature not settled (INC_ERR_THERMAL): nothing written */
-    GYROCAL_ABORTED_MOTION,     /* motion during the procedure (INC_ERR_MOTION): old offsets back */
-    GYROCAL_ABORTED_THERMAL,    /* temperature moved during it (INC_ERR_THERMAL): old offsets */
-    GYROCAL_ABORTED_VERIFY,     /* corrected output implausible afterwards (INC_ERR_ABORTED) */
-    GYROCAL_FAILED_DEVICE,      /* bus or device error (the driver's code); old offsets put back
+    GYROCAL_SATURATED,       /* done; an offset is at a register limit (INC_ERR_RANGE) */
+    GYROCAL_REFUSED_MOVING,  /* not at rest when asked (INC_ERR_MOTION): nothing written */
+    GYROCAL_REFUSED_THERMAL, /* temperature not settled (INC_ERR_THERMAL): nothing written */
+    GYROCAL_ABORTED_MOTION,  /* motion during the procedure (INC_ERR_MOTION): old offsets back */
+    GYROCAL_ABORTED_THERMAL, /* temperature moved during it (INC_ERR_THERMAL): old offsets */
+    GYROCAL_ABORTED_VERIFY,  /* corrected output implausible afterwards (INC_ERR_ABORTED) */
+    GYROCAL_FAILED_DEVICE,   /* bus or device error (the driver's code); old offsets put back
                                    if the bus still answers */
     GYROCAL_REASONS
 };
@@ -78,24 +78,24 @@ enum gyrocal_reason {
 const char *gyrocal_reason_text(enum gyrocal_reason r);
 
 /* Seed 003's bias accuracies, deg/s Q16.16: autonull 0.08, precision 0.008, manual 0.006. */
-#define GYROCAL_ADEV_AUTONULL_Q16 5243   /* 0.08 * 65536 = 5242.9 */
-#define GYROCAL_ADEV_PRECISION_Q16 524   /* 0.008 */
-#define GYROCAL_ADEV_MANUAL_Q16 393      /* 0.006 */
-#define GYROCAL_MANUAL_SAMPLES 82000u    /* seed 003: about 100 s at 819.2 SPS */
-#define GYROCAL_AUTONULL_M 6u            /* SENS_AVG = 0x06 */
-#define GYROCAL_AUTONULL_FILL_MS 200u    /* seed 003: 200 ms for the taps to fill */
-#define GYROCAL_PROC_PER_DPS 320         /* processor-side correction units per deg/s */
+#define GYROCAL_ADEV_AUTONULL_Q16 5243 /* 0.08 * 65536 = 5242.9 */
+#define GYROCAL_ADEV_PRECISION_Q16 524 /* 0.008 */
+#define GYROCAL_ADEV_MANUAL_Q16 393    /* 0.006 */
+#define GYROCAL_MANUAL_SAMPLES 82000u  /* seed 003: about 100 s at 819.2 SPS */
+#define GYROCAL_AUTONULL_M 6u          /* SENS_AVG = 0x06 */
+#define GYROCAL_AUTONULL_FILL_MS 200u  /* seed 003: 200 ms for the taps to fill */
+#define GYROCAL_PROC_PER_DPS 320       /* processor-side correction units per deg/s */
 
 struct gyrocal_cfg {
-    struct still_cfg still;            /* in output counts (see gyrocal_default_cfg) */
-    struct still_thermal_cfg thermal;  /* in TEMP_OUT counts */
-    uint32_t settle_timeout_ms;        /* MANUAL: longest wait for settling; 0 = refuse at once */
-    uint32_t manual_samples;           /* MANUAL: samples averaged, 2..2^24 */
-    bool manual_to_register;           /* MANUAL: write XGYRO_OFF.. (else processor-side only) */
-    bool flash_update;                 /* MANUAL: GLOB_CMD[3] after writing (seed 003 step 8) */
-    int32_t adev_q16[GYROCAL_MODES];   /* Allan deviation at each mode's averaging time, > 0 */
-    uint32_t verify_samples;           /* samples of the verification (0 = none), <= 2^24 */
-    uint32_t verify_sigmas;            /* verification limit in sigmas, 1..100 */
+    struct still_cfg still;           /* in output counts (see gyrocal_default_cfg) */
+    struct still_thermal_cfg thermal; /* in TEMP_OUT counts */
+    uint32_t settle_timeout_ms;       /* MANUAL: longest wait for settling; 0 = refuse at once */
+    uint32_t manual_samples;          /* MANUAL: samples averaged, 2..2^24 */
+    bool manual_to_register;          /* MANUAL: write XGYRO_OFF.. (else processor-side only) */
+    bool flash_update;                /* MANUAL: GLOB_CMD[3] after writing (seed 003 step 8) */
+    int32_t adev_q16[GYROCAL_MODES];  /* Allan deviation at each mode's averaging time, > 0 */
+    uint32_t verify_samples;          /* samples of the verification (0 = none), <= 2^24 */
+    uint32_t verify_sigmas;           /* verification limit in sigmas, 1..100 */
 };
 
 /*
@@ -120,23 +120,23 @@ struct gyrocal_correction {
 };
 
 struct gyrocal_result {
-    uint8_t mode;                 /* enum gyrocal_mode */
-    uint8_t reason;               /* enum gyrocal_reason */
-    int32_t old_offset[3];        /* XGYRO_OFF.. before, register counts */
-    int32_t new_offset[3];        /* after (== old when refused or aborted) */
-    bool saturated[3];            /* offset at a register limit */
-    int16_t proc_corr[3];         /* processor-side correction in force after, 1/320 deg/s */
-    bool proc_saturated[3];       /* it hit the int16 limits */
-    int32_t mean_q16[3];          /* MANUAL: mean output over the average, deg/s Q16.16 */
-    int32_t residual_q16[3];      /* residual estimate, 1 sigma, deg/s Q16.16 */
-    int32_t verify_mean_q16[3];   /* corrected output mean in the verification, deg/s Q16.16 */
-    int32_t verify_limit_q16[3];  /* its limit */
-    uint32_t samples;             /* MANUAL: samples averaged */
-    uint64_t t_avg_start_ns;      /* the span whose average the new offsets represent (HAL time): */
-    uint64_t t_avg_end_ns;        /* AUTONULL the 2 x 64 - 1 filter taps before GLOB_CMD[0],
+    uint8_t mode;                /* enum gyrocal_mode */
+    uint8_t reason;              /* enum gyrocal_reason */
+    int32_t old_offset[3];       /* XGYRO_OFF.. before, register counts */
+    int32_t new_offset[3];       /* after (== old when refused or aborted) */
+    bool saturated[3];           /* offset at a register limit */
+    int16_t proc_corr[3];        /* processor-side correction in force after, 1/320 deg/s */
+    bool proc_saturated[3];      /* it hit the int16 limits */
+    int32_t mean_q16[3];         /* MANUAL: mean output over the average, deg/s Q16.16 */
+    int32_t residual_q16[3];     /* residual estimate, 1 sigma, deg/s Q16.16 */
+    int32_t verify_mean_q16[3];  /* corrected output mean in the verification, deg/s Q16.16 */
+    int32_t verify_limit_q16[3]; /* its limit */
+    uint32_t samples;            /* MANUAL: samples averaged */
+    uint64_t t_avg_start_ns;     /* the span whose average the new offsets represent (HAL time): */
+    uint64_t t_avg_end_ns;       /* AUTONULL the 2 x 64 - 1 filter taps before GLOB_CMD[0],
                                      PRECISION the 30 s after GLOB_CMD[4], MANUAL first to last
                                      sample; 0 when the mode did not get that far */
-    uint32_t missed;              /* data-ready edges missed while reading */
+    uint32_t missed;             /* data-ready edges missed while reading */
     uint64_t t_start_ns, t_end_ns;
 };
 
@@ -146,8 +146,8 @@ struct gyrocal {
     struct still still;
     struct still_thermal thermal;
     struct gyrocal_correction corr;
-    uint32_t fed;                 /* samples fed to the detectors */
-    uint32_t missed;              /* data-ready edges missed (monitoring included) */
+    uint32_t fed;    /* samples fed to the detectors */
+    uint32_t missed; /* data-ready edges missed (monitoring included) */
     bool ready;
 };
 
@@ -183,7 +183,8 @@ struct gyrocal_correction gyrocal_correction_get(const struct gyrocal *g);
  * nearest (ties away from zero; |error| <= 0.5 LSB Q16 = 7.6e-6 deg/s), added with saturation.
  * Without a valid correction, or for axis > 2, gyro is returned unchanged.
  */
-int32_t gyrocal_correct_q16(const struct gyrocal_correction *c, unsigned axis, int32_t gyro_dps_q16);
+int32_t gyrocal_correct_q16(const struct gyrocal_correction *c, unsigned axis,
+                            int32_t gyro_dps_q16);
 
 #ifdef __cplusplus
 }

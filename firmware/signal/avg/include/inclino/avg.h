@@ -42,8 +42,8 @@ extern "C" {
  * Mean of N consecutive samples; then it starts the next block. N in 1..2^31.
  * Cost per sample: one int64 add and a compare; one rounding division per block. */
 struct avg_block {
-    struct fx_sum acc;     /* sum and count of the current block */
-    uint32_t n;            /* block length; 0 = not initialised */
+    struct fx_sum acc; /* sum and count of the current block */
+    uint32_t n;        /* block length; 0 = not initialised */
 };
 
 /* N == 0 -> INC_ERR_INVAL, N > 2^31 -> INC_ERR_OVERFLOW, NULL -> INC_ERR_NULL (state unusable). */
@@ -67,12 +67,12 @@ void avg_block_restart(struct avg_block *b);
  * While fewer than W samples have arrived the output is the mean of those (*full = false).
  * W a power of two divides by a rounding shift; another W costs one 64-bit division per output. */
 struct avg_moving {
-    int32_t *line;        /* caller's delay line, capacity >= w */
-    uint32_t w;           /* window; 0 = not initialised */
-    uint32_t head;        /* next slot to overwrite */
-    uint32_t count;       /* samples in the window (<= w) */
-    int64_t sum;          /* exact sum of the window */
-    unsigned shift;       /* log2(w) when w is a power of two */
+    int32_t *line;  /* caller's delay line, capacity >= w */
+    uint32_t w;     /* window; 0 = not initialised */
+    uint32_t head;  /* next slot to overwrite */
+    uint32_t count; /* samples in the window (<= w) */
+    int64_t sum;    /* exact sum of the window */
+    unsigned shift; /* log2(w) when w is a power of two */
     bool pow2;
 };
 
@@ -106,16 +106,16 @@ void avg_moving_restart(struct avg_moving *m);
 #define AVG_CASCADE_MAX_PASSES 4u
 
 struct avg_cascade {
-    int64_t *lines;       /* P delay lines of W entries: pass k's inputs at lines[k * W ..] */
-    int64_t sum[AVG_CASCADE_MAX_PASSES];  /* running sum of each pass */
-    uint32_t w;           /* 0 = not initialised */
+    int64_t *lines; /* P delay lines of W entries: pass k's inputs at lines[k * W ..] */
+    int64_t sum[AVG_CASCADE_MAX_PASSES]; /* running sum of each pass */
+    uint32_t w;                          /* 0 = not initialised */
     unsigned passes;
-    uint32_t head;        /* slot shared by all lines */
-    uint32_t seen;        /* inputs so far, saturating at the kernel length */
-    uint32_t divisor;     /* W^P */
-    unsigned shift;       /* log2(W^P) when W is a power of two */
+    uint32_t head;    /* slot shared by all lines */
+    uint32_t seen;    /* inputs so far, saturating at the kernel length */
+    uint32_t divisor; /* W^P */
+    unsigned shift;   /* log2(W^P) when W is a power of two */
     bool pow2;
-    bool primed;          /* history seeded with the first sample */
+    bool primed; /* history seeded with the first sample */
 };
 
 #define AVG_CASCADE_DEFINE(name, w, passes) \
@@ -149,16 +149,16 @@ void avg_cascade_restart(struct avg_cascade *c);
  * Fixed storage: AVG_BARTLETT_MAX_TAPS per stage inside the struct. History seeded with the first
  * sample as for the cascade; *full after 2N - 1 inputs. */
 #define AVG_BARTLETT_MAX_M 6u
-#define AVG_BARTLETT_MAX_TAPS (1u << AVG_BARTLETT_MAX_M)   /* 64 */
+#define AVG_BARTLETT_MAX_TAPS (1u << AVG_BARTLETT_MAX_M) /* 64 */
 
 struct avg_bartlett {
-    int32_t x_line[AVG_BARTLETT_MAX_TAPS];   /* stage-1 inputs */
-    int64_t s_line[AVG_BARTLETT_MAX_TAPS];   /* stage-2 inputs (stage-1 sums) */
-    int64_t s1, s2;                          /* running sums of the stages */
-    uint32_t n;                              /* taps per stage, 2^m; 0 = not initialised */
+    int32_t x_line[AVG_BARTLETT_MAX_TAPS]; /* stage-1 inputs */
+    int64_t s_line[AVG_BARTLETT_MAX_TAPS]; /* stage-2 inputs (stage-1 sums) */
+    int64_t s1, s2;                        /* running sums of the stages */
+    uint32_t n;                            /* taps per stage, 2^m; 0 = not initialised */
     unsigned m;
-    uint32_t d;                              /* decimation factor */
-    uint32_t phase;                          /* inputs since the last output */
+    uint32_t d;     /* decimation factor */
+    uint32_t phase; /* inputs since the last output */
     uint32_t head;
     uint32_t seen;
     bool primed;

@@ -40,9 +40,9 @@ extern "C" {
 
 /* ---- Limits and constants ------------------------------------------------------------------- */
 
-#define CAL_ONE_G FX_Q16_ONE                  /* 1 g in Q16 */
-#define CAL_OFFSET_MAX CALREC_LIM_ACC_OFFSET  /* |offset| <= 0.5 g from a procedure (Q16) */
-#define CAL_GAIN_MIN CALREC_LIM_GAIN_MIN      /* procedure gains in [0.75, 1.25] (Q30) */
+#define CAL_ONE_G FX_Q16_ONE                 /* 1 g in Q16 */
+#define CAL_OFFSET_MAX CALREC_LIM_ACC_OFFSET /* |offset| <= 0.5 g from a procedure (Q16) */
+#define CAL_GAIN_MIN CALREC_LIM_GAIN_MIN     /* procedure gains in [0.75, 1.25] (Q30) */
 #define CAL_GAIN_MAX CALREC_LIM_GAIN_MAX
 #define CAL_GYRO_OFFSET_MAX CALREC_LIM_GYRO_OFFSET /* |gyro offset| <= 30 deg/s (Q16) */
 
@@ -58,16 +58,21 @@ extern "C" {
 /* Plausibility of the temperature-corrected coefficients: an effective scale factor k outside
  * [0.625, 1.5] or an effective offset beyond +-1 g means the record cannot describe this part
  * at this temperature: the state goes uncalibrated (INC_ERR_RANGE) rather than apply it. */
-#define CAL_KEFF_MIN ((fx_q30_t)671088640)   /* 0.625 in Q30 */
-#define CAL_KEFF_MAX ((fx_q30_t)1610612736)  /* 1.5 in Q30 */
-#define CAL_BEFF_MAX FX_Q16_ONE              /* 1 g in Q16 */
+#define CAL_KEFF_MIN ((fx_q30_t)671088640)  /* 0.625 in Q30 */
+#define CAL_KEFF_MAX ((fx_q30_t)1610612736) /* 1.5 in Q30 */
+#define CAL_BEFF_MAX FX_Q16_ONE             /* 1 g in Q16 */
 /* Temperatures outside the record's temperature range [-100, 200] degC are clamped to it. */
 #define CAL_T_MIN CALREC_LIM_T_MIN
 #define CAL_T_MAX CALREC_LIM_T_MAX
 
 /* Six-position face order: the axis pointing up (reading +1 g) / down (-1 g). */
 enum cal_face {
-    CAL_FACE_XP = 0, CAL_FACE_XN, CAL_FACE_YP, CAL_FACE_YN, CAL_FACE_ZP, CAL_FACE_ZN,
+    CAL_FACE_XP = 0,
+    CAL_FACE_XN,
+    CAL_FACE_YP,
+    CAL_FACE_YN,
+    CAL_FACE_ZP,
+    CAL_FACE_ZN,
 };
 #define CAL_FACES 6
 
@@ -146,10 +151,10 @@ int cal_gyro_offset(const struct cal_avg *still, int32_t max_span, fx_q16_t offs
  * <= 0.5 * 2^-32 deg per sample). Caller-owned.
  */
 struct cal_turn {
-    int64_t angle_q32[3];  /* integrated angle, deg Q32 */
-    fx_q16_t offset[3];    /* deg/s Q16 */
-    fx_q30_t dt;           /* sample period, s Q30 */
-    uint32_t n;            /* samples added */
+    int64_t angle_q32[3]; /* integrated angle, deg Q32 */
+    fx_q16_t offset[3];   /* deg/s Q16 */
+    fx_q30_t dt;          /* sample period, s Q30 */
+    uint32_t n;           /* samples added */
 };
 
 /* Start a turn: offset (deg/s Q16, from cal_gyro_offset), dt in (0, 1] s Q30.

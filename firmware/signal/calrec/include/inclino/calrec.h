@@ -47,25 +47,25 @@ extern "C" {
 
 /* ---- Image header -------------------------------------------------------------------------- */
 
-#define CALREC_MAGIC 0x4C414349u  /* bytes 'I' 'C' 'A' 'L' in little-endian order */
+#define CALREC_MAGIC 0x4C414349u /* bytes 'I' 'C' 'A' 'L' in little-endian order */
 /* The format version this firmware writes and reads. History: 1 = first layout; 2 = the same
  * layout plus the temperature-model kind LORENTZ_CUBIC, and the polynomial kinds (LINEAR,
  * PARABOLA, LORENTZ_CUBIC) held at the ends of [t_ref - t_span, t_ref + t_span] (v1 left their
  * extrapolation unspecified). docs/calibration-storage.md 2.4. */
 #define CALREC_VERSION 2u
 
-#define CALREC_OFF_MAGIC 0u       /* byte offsets of the header words, valid for every version */
+#define CALREC_OFF_MAGIC 0u /* byte offsets of the header words, valid for every version */
 #define CALREC_OFF_VERSION 4u
 #define CALREC_OFF_LENGTH 8u
 #define CALREC_OFF_SEQ 12u
 #define CALREC_HEADER_SIZE 16u
-#define CALREC_MIN_SIZE 20u       /* header + CRC: the smallest length any version can declare */
+#define CALREC_MIN_SIZE 20u /* header + CRC: the smallest length any version can declare */
 
 /* Version-2 layout (unchanged from version 1): byte offset of each field group (every word
  * little-endian). */
-#define CALREC_OFF_BINDING 16u      /* 6 words: family, product, revision, serial, lot_id1, lot_id2 */
-#define CALREC_OFF_ACC_OFFSET 40u   /* 3 words, x y z */
-#define CALREC_OFF_ACC_GAIN 52u     /* 3 words */
+#define CALREC_OFF_BINDING 16u    /* 6 words: family, product, revision, serial, lot_id1, lot_id2 */
+#define CALREC_OFF_ACC_OFFSET 40u /* 3 words, x y z */
+#define CALREC_OFF_ACC_GAIN 52u   /* 3 words */
 #define CALREC_OFF_ACC_MISALIGN 64u /* 9 words, row-major [r][c] */
 #define CALREC_OFF_ACC_NONLIN 100u  /* 12 words, [axis][c0..c3] */
 #define CALREC_OFF_ACC_TBIAS 148u   /* 3 models of CALREC_TMODEL_SIZE bytes, x y z */
@@ -78,16 +78,16 @@ extern "C" {
 
 /* ---- Fixed-point helpers for constants ----------------------------------------------------- */
 
-#define CALREC_Q16_ONE 65536             /* 1.0 in Q16.16 */
-#define CALREC_Q30_ONE 1073741824        /* 1.0 in Q30 */
+#define CALREC_Q16_ONE 65536      /* 1.0 in Q16.16 */
+#define CALREC_Q30_ONE 1073741824 /* 1.0 in Q30 */
 
 /* ---- Sensor binding ------------------------------------------------------------------------ */
 
 /* Part family (binding.family). 0 is never valid. */
 enum calrec_family {
-    CALREC_FAMILY_SCA3000 = 1,  /* Murata/VTI SCA3000 accelerometer */
-    CALREC_FAMILY_ADIS1625X = 2,/* ADI ADIS16250/16255 (and 16260/16265) single-axis gyro */
-    CALREC_FAMILY_ADIS163XX = 3,/* ADI ADIS1636x / ADIS1640x six-axis IMU */
+    CALREC_FAMILY_SCA3000 = 1,   /* Murata/VTI SCA3000 accelerometer */
+    CALREC_FAMILY_ADIS1625X = 2, /* ADI ADIS16250/16255 (and 16260/16265) single-axis gyro */
+    CALREC_FAMILY_ADIS163XX = 3, /* ADI ADIS1636x / ADIS1640x six-axis IMU */
 };
 
 /* SCA3000 variant codes for binding.product (the part has no product-id register). */
@@ -135,7 +135,7 @@ enum calrec_tmodel_kind {
 };
 #define CALREC_TM_KIND_COUNT 6
 
-#define CALREC_TM_PARAMS 16      /* parameter words per model; also the maximum PWL knot count */
+#define CALREC_TM_PARAMS 16 /* parameter words per model; also the maximum PWL knot count */
 
 /*
  * One temperature model y(T), T in degC Q16.16. "y format" is the format of the quantity the
@@ -170,8 +170,8 @@ struct calrec_tmodel {
 
 /* ---- The record ---------------------------------------------------------------------------- */
 
-#define CALREC_AXES 3            /* x, y, z, in this order everywhere */
-#define CALREC_NONLIN_TERMS 4    /* c0..c3 */
+#define CALREC_AXES 3         /* x, y, z, in this order everywhere */
+#define CALREC_NONLIN_TERMS 4 /* c0..c3 */
 
 /*
  * The calibration coefficients. Order of declaration = order in the image.
@@ -211,20 +211,20 @@ struct calrec {
 
 /* ---- Range limits (inclusive), in the field's own format ----------------------------------- */
 
-#define CALREC_LIM_ACC_OFFSET 32768          /* 0.5 g, Q16.16 */
-#define CALREC_LIM_GAIN_MIN 805306368        /* 0.75, Q30 */
-#define CALREC_LIM_GAIN_MAX 1342177280       /* 1.25, Q30 */
-#define CALREC_LIM_MISALIGN_OFFDIAG 134217728/* 0.125 (7.2 deg of cross-axis), Q30 */
-#define CALREC_LIM_NONLIN_C01 67108864       /* 0.0625, Q30 */
-#define CALREC_LIM_NONLIN_C23 268435456      /* 0.25, Q30 */
-#define CALREC_LIM_TBIAS 32768               /* 0.5 g, Q16.16 */
-#define CALREC_LIM_TSCALE 134217728          /* 0.125, Q30 */
-#define CALREC_LIM_T_MIN (-6553600)          /* -100 degC, Q16.16 */
-#define CALREC_LIM_T_MAX 13107200            /* +200 degC, Q16.16 */
-#define CALREC_LIM_SPAN_MIN 65536            /* 1 degC, Q16.16 */
-#define CALREC_LIM_SPAN_MAX 13107200         /* 200 degC, Q16.16 */
-#define CALREC_LIM_WIDTH_MAX 26214400        /* 400 degC, Q16.16 (Lorentz w; minimum is 1 degC) */
-#define CALREC_LIM_GYRO_OFFSET 1966080       /* 30 deg/s, Q16.16 */
+#define CALREC_LIM_ACC_OFFSET 32768           /* 0.5 g, Q16.16 */
+#define CALREC_LIM_GAIN_MIN 805306368         /* 0.75, Q30 */
+#define CALREC_LIM_GAIN_MAX 1342177280        /* 1.25, Q30 */
+#define CALREC_LIM_MISALIGN_OFFDIAG 134217728 /* 0.125 (7.2 deg of cross-axis), Q30 */
+#define CALREC_LIM_NONLIN_C01 67108864        /* 0.0625, Q30 */
+#define CALREC_LIM_NONLIN_C23 268435456       /* 0.25, Q30 */
+#define CALREC_LIM_TBIAS 32768                /* 0.5 g, Q16.16 */
+#define CALREC_LIM_TSCALE 134217728           /* 0.125, Q30 */
+#define CALREC_LIM_T_MIN (-6553600)           /* -100 degC, Q16.16 */
+#define CALREC_LIM_T_MAX 13107200             /* +200 degC, Q16.16 */
+#define CALREC_LIM_SPAN_MIN 65536             /* 1 degC, Q16.16 */
+#define CALREC_LIM_SPAN_MAX 13107200          /* 200 degC, Q16.16 */
+#define CALREC_LIM_WIDTH_MAX 26214400         /* 400 degC, Q16.16 (Lorentz w; minimum is 1 degC) */
+#define CALREC_LIM_GYRO_OFFSET 1966080        /* 30 deg/s, Q16.16 */
 
 /* ---- Functions ----------------------------------------------------------------------------- */
 

@@ -33,20 +33,20 @@ extern "C" {
 #define GPSB_MAX_ROUNDS 8u
 
 struct gpsb_cfg {
-    fx_q16_t q_noise_g;     /* Q: at-rest noise of the acceleration (Q16 g), > 0 */
-    uint8_t rounds;         /* n: rounds of K = K + (1 - K) K, 0..GPSB_MAX_ROUNDS (default 1) */
-    uint32_t max_gap_ns;    /* longer without a fix -> speed not valid (e.g. 3 s), > 0 */
-    uint32_t max_step_ns;   /* a step longer than this is refused (INC_ERR_RANGE), 1..1e9 */
+    fx_q16_t q_noise_g;   /* Q: at-rest noise of the acceleration (Q16 g), > 0 */
+    uint8_t rounds;       /* n: rounds of K = K + (1 - K) K, 0..GPSB_MAX_ROUNDS (default 1) */
+    uint32_t max_gap_ns;  /* longer without a fix -> speed not valid (e.g. 3 s), > 0 */
+    uint32_t max_step_ns; /* a step longer than this is refused (INC_ERR_RANGE), 1..1e9 */
 };
 
 struct gpsb {
     struct gpsb_cfg cfg;
-    int64_t v_q32;          /* blended speed, Q32.32 m/s */
-    int64_t v_gps_q32;      /* last GPS speed, Q32.32 m/s */
-    uint64_t since_fix_ns;  /* time since the last fix */
+    int64_t v_q32;         /* blended speed, Q32.32 m/s */
+    int64_t v_gps_q32;     /* last GPS speed, Q32.32 m/s */
+    uint64_t since_fix_ns; /* time since the last fix */
     bool have_fix;
-    bool ready;             /* initialised */
-    fx_q30_t last_k;        /* K of the last step (for logs and tests) */
+    bool ready;      /* initialised */
+    fx_q30_t last_k; /* K of the last step (for logs and tests) */
 };
 
 /* The default configuration: Q as given, one round, 3 s gap, 100 ms maximum step. */

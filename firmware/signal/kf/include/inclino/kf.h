@@ -70,9 +70,9 @@
 extern "C" {
 #endif
 
-#define KF_N_MAX 4u  /* states */
-#define KF_U_MAX 4u  /* control inputs */
-#define KF_M_MAX 4u  /* measurement rows per kf_update call */
+#define KF_N_MAX 4u /* states */
+#define KF_U_MAX 4u /* control inputs */
+#define KF_M_MAX 4u /* measurement rows per kf_update call */
 
 #define KF_X_FRAC 16u /* internal state = raw * 2^16 */
 #define KF_P_FRAC 16u /* covariance = raw_i * raw_j * 2^16 */
@@ -89,27 +89,27 @@ extern "C" {
 /* The filter state. Caller-allocated; set up by kf_init. The fields may be read directly
  * (formats above); write them only through the functions. */
 struct kf {
-    int64_t x[KF_N_MAX];             /* state, raw * 2^KF_X_FRAC */
-    int64_t p[KF_N_MAX][KF_N_MAX];   /* covariance, P format, symmetric */
-    uint8_t n;                       /* states, 1..KF_N_MAX; 0 = not initialised */
-    bool overflow;                   /* sticky: a result saturated since init/clear */
+    int64_t x[KF_N_MAX];           /* state, raw * 2^KF_X_FRAC */
+    int64_t p[KF_N_MAX][KF_N_MAX]; /* covariance, P format, symmetric */
+    uint8_t n;                     /* states, 1..KF_N_MAX; 0 = not initialised */
+    bool overflow;                 /* sticky: a result saturated since init/clear */
 };
 
 /* Equations (1) and (2): the transition. Row-major arrays owned by the caller. */
 struct kf_model {
-    uint8_t n;              /* states, must equal the filter's */
-    uint8_t nu;             /* control inputs, 0..KF_U_MAX */
-    const fx_q30_t *a;      /* A, n x n, Q30 */
-    const fx_q30_t *b;      /* B, n x nu, Q30 (may be NULL when nu == 0) */
-    const int64_t *q;       /* Q, n x n, P format (symmetric, see RANGES) */
+    uint8_t n;         /* states, must equal the filter's */
+    uint8_t nu;        /* control inputs, 0..KF_U_MAX */
+    const fx_q30_t *a; /* A, n x n, Q30 */
+    const fx_q30_t *b; /* B, n x nu, Q30 (may be NULL when nu == 0) */
+    const int64_t *q;  /* Q, n x n, P format (symmetric, see RANGES) */
 };
 
 /* Equations (3) to (5): m measurement rows with diagonal R. */
 struct kf_meas {
-    uint8_t n;              /* states, must equal the filter's */
-    uint8_t m;              /* rows, 1..KF_M_MAX */
-    const fx_q30_t *h;      /* H, m x n, Q30 */
-    const int64_t *r;       /* diagonal of R, m entries, P format in the row's raw unit, >= 1 */
+    uint8_t n;         /* states, must equal the filter's */
+    uint8_t m;         /* rows, 1..KF_M_MAX */
+    const fx_q30_t *h; /* H, m x n, Q30 */
+    const int64_t *r;  /* diagonal of R, m entries, P format in the row's raw unit, >= 1 */
 };
 
 /* Set up a filter of n states with x = x0 (raw, NULL: zeros) and P = p0 (n x n row-major, P

@@ -63,12 +63,12 @@ extern "C" {
 
 /* Constants of one axis (seed 004 step 2 names). */
 struct kf_adapt_config {
-    uint32_t window;   /* k: samples in the window including the current one, 2..KF_ADAPT_WIN_MAX */
-    int64_t c;         /* C: process noise constant, P format, 1..KF_P_MAX */
-    int64_t d;         /* D: process noise slope per |dz|, raw * 2^16, 0..KF_P_MAX */
-    int64_t a;         /* A: measurement noise constant, P format, |A| <= KF_P_MAX */
-    fx_q16_t b;        /* B: measurement noise slope on Q, dimensionless Q16, any sign */
-    int64_t p0;        /* P at the first sample, P format, 0..KF_P_MAX */
+    uint32_t window; /* k: samples in the window including the current one, 2..KF_ADAPT_WIN_MAX */
+    int64_t c;       /* C: process noise constant, P format, 1..KF_P_MAX */
+    int64_t d;       /* D: process noise slope per |dz|, raw * 2^16, 0..KF_P_MAX */
+    int64_t a;       /* A: measurement noise constant, P format, |A| <= KF_P_MAX */
+    fx_q16_t b;      /* B: measurement noise slope on Q, dimensionless Q16, any sign */
+    int64_t p0;      /* P at the first sample, P format, 0..KF_P_MAX */
 };
 
 /* State of one axis. Caller-allocated, set up by kf_adapt_init. */
@@ -85,9 +85,9 @@ struct kf_adapt {
 
 /* Diagnostics of one step (kf_adapt_process may be passed NULL instead). */
 struct kf_adapt_step {
-    int32_t dz;        /* step 2, raw */
-    int64_t q, r;      /* Q(k), R(k), P format */
-    fx_q30_t k;        /* gain, Q30 in [0, 2^30] */
+    int32_t dz;   /* step 2, raw */
+    int64_t q, r; /* Q(k), R(k), P format */
+    fx_q30_t k;   /* gain, Q30 in [0, 2^30] */
 };
 
 /* Check a configuration. 0, INC_ERR_NULL, INC_ERR_INVAL (a field outside RANGES). */

@@ -37,25 +37,25 @@ enum slope_method {
 
 /* Residual errors of the calibrated part, one axis, worst case (seed 000 Table 1 "after"). */
 struct slope_budget {
-    fx_q30_t sensitivity;   /* relative sensitivity error, e.g. 0.001 = 0.1 % (Q30, >= 0, < 0.5) */
-    fx_q16_t offset_g;      /* offset residual (Q16 g, >= 0) */
-    fx_q16_t nonlinearity_g;/* nonlinearity residual within +-30 deg (Q16 g, >= 0) */
-    fx_q16_t temperature_g; /* offset drift over temperature after compensation (Q16 g, >= 0) */
-    fx_q16_t noise_sigma_g; /* rms noise of ONE sample (Q16 g, >= 0) */
-    fx_q16_t k_sigma;       /* noise factor k (Q16, > 0): 6.0 in seed 000 */
+    fx_q30_t sensitivity;    /* relative sensitivity error, e.g. 0.001 = 0.1 % (Q30, >= 0, < 0.5) */
+    fx_q16_t offset_g;       /* offset residual (Q16 g, >= 0) */
+    fx_q16_t nonlinearity_g; /* nonlinearity residual within +-30 deg (Q16 g, >= 0) */
+    fx_q16_t temperature_g;  /* offset drift over temperature after compensation (Q16 g, >= 0) */
+    fx_q16_t noise_sigma_g;  /* rms noise of ONE sample (Q16 g, >= 0) */
+    fx_q16_t k_sigma;        /* noise factor k (Q16, > 0): 6.0 in seed 000 */
 };
 
 struct slope_cfg {
     enum slope_method method;
-    uint8_t slope_axis;        /* 0..2: axis along the vehicle's length (its slope) */
-    uint8_t gravity_axis;      /* 0..2, != slope_axis: axis along gravity when level (two-axis) */
-    bool slope_axis_negative;  /* the axis points downhill when the nose is up */
+    uint8_t slope_axis;       /* 0..2: axis along the vehicle's length (its slope) */
+    uint8_t gravity_axis;     /* 0..2, != slope_axis: axis along gravity when level (two-axis) */
+    bool slope_axis_negative; /* the axis points downhill when the nose is up */
     bool gravity_axis_negative;
     struct slope_budget budget;
-    fx_q16_t max_slope_deg;    /* beyond this |theta| the estimate is flagged out of range
+    fx_q16_t max_slope_deg;   /* beyond this |theta| the estimate is flagged out of range
                                   (the budget's nonlinearity is only valid within it); 0..90 */
-    fx_q16_t max_bound_deg;    /* an estimate whose bound exceeds this is not valid; > 0 */
-    fx_q16_t magnitude_tol_g;  /* two-axis: |(A_s, A_g)| must be within 1 g +- this (a vehicle
+    fx_q16_t max_bound_deg;   /* an estimate whose bound exceeds this is not valid; > 0 */
+    fx_q16_t magnitude_tol_g; /* two-axis: |(A_s, A_g)| must be within 1 g +- this (a vehicle
                                   that accelerates or is jolted is not parked); single axis:
                                   |A_s| must be <= 1 g + this */
 };
@@ -70,21 +70,21 @@ enum slope_flag {
 };
 
 struct slope_input {
-    fx_q16_t accel_g[3];   /* mean calibrated acceleration per axis over the window (Q16 g) */
-    uint32_t n_samples;    /* samples in the mean (>= 1) */
-    bool still;            /* the stillness detector's verdict over the same window */
-    bool calibrated;       /* a valid calibration record was applied */
+    fx_q16_t accel_g[3]; /* mean calibrated acceleration per axis over the window (Q16 g) */
+    uint32_t n_samples;  /* samples in the mean (>= 1) */
+    bool still;          /* the stillness detector's verdict over the same window */
+    bool calibrated;     /* a valid calibration record was applied */
 };
 
 struct slope_result {
-    bool valid;            /* true only when flags == 0 */
-    uint32_t flags;        /* enum slope_flag bits */
-    fx_q16_t slope_deg;    /* theta, positive nose up (Q16 deg) */
-    fx_q16_t grade_pct;    /* 100 * tan(theta) (Q16 %) */
-    fx_q16_t bound_deg;    /* |true theta - slope_deg| <= bound_deg given the budget (Q16 deg) */
-    fx_q16_t bound_pct;    /* the same bound in grade (Q16 %) */
-    fx_q16_t accel_bound_g;/* e_a, the acceleration error bound of the slope axis (Q16 g) */
-    fx_q16_t noise_g;      /* its noise term k * sigma / sqrt(N) (Q16 g) */
+    bool valid;             /* true only when flags == 0 */
+    uint32_t flags;         /* enum slope_flag bits */
+    fx_q16_t slope_deg;     /* theta, positive nose up (Q16 deg) */
+    fx_q16_t grade_pct;     /* 100 * tan(theta) (Q16 %) */
+    fx_q16_t bound_deg;     /* |true theta - slope_deg| <= bound_deg given the budget (Q16 deg) */
+    fx_q16_t bound_pct;     /* the same bound in grade (Q16 %) */
+    fx_q16_t accel_bound_g; /* e_a, the acceleration error bound of the slope axis (Q16 g) */
+    fx_q16_t noise_g;       /* its noise term k * sigma / sqrt(N) (Q16 g) */
 };
 
 /*

@@ -63,44 +63,44 @@ extern "C" {
 #define STILL_WHY_ACCEL_DRIFT 0x20u
 
 enum still_state {
-    STILL_UNKNOWN = 0,   /* no complete window since init/reset */
-    STILL_MOVING,        /* the last window was not quiet */
-    STILL_SETTLING,      /* quiet, but for fewer than windows_required windows */
-    STILL_AT_REST        /* windows_required consecutive quiet windows, the last one included */
+    STILL_UNKNOWN = 0, /* no complete window since init/reset */
+    STILL_MOVING,      /* the last window was not quiet */
+    STILL_SETTLING,    /* quiet, but for fewer than windows_required windows */
+    STILL_AT_REST      /* windows_required consecutive quiet windows, the last one included */
 };
 
 struct still_cfg {
-    uint32_t window;            /* W, samples per window, STILL_WINDOW_MIN..STILL_WINDOW_MAX */
-    uint32_t windows_required;  /* consecutive quiet windows for AT_REST, >= 1 */
-    uint64_t gyro_var_max;      /* per-axis variance limit, gyro unit^2, <= STILL_VAR_LIMIT */
-    uint64_t accel_var_max;     /* per-axis variance limit, accel unit^2, <= STILL_VAR_LIMIT */
-    uint32_t gyro_mean_max;     /* |mean rate| limit per axis, gyro unit; 0 = no test */
-    int32_t accel_one_g;        /* 1 g in accel units, 0..STILL_ONE_G_MAX; 0 = no norm test */
-    uint32_t accel_norm_tol;    /* | |a| - 1 g | limit, accel units, < accel_one_g */
-    uint32_t accel_drift_max;   /* window-to-window accel mean change limit per axis; 0 = off */
+    uint32_t window;           /* W, samples per window, STILL_WINDOW_MIN..STILL_WINDOW_MAX */
+    uint32_t windows_required; /* consecutive quiet windows for AT_REST, >= 1 */
+    uint64_t gyro_var_max;     /* per-axis variance limit, gyro unit^2, <= STILL_VAR_LIMIT */
+    uint64_t accel_var_max;    /* per-axis variance limit, accel unit^2, <= STILL_VAR_LIMIT */
+    uint32_t gyro_mean_max;    /* |mean rate| limit per axis, gyro unit; 0 = no test */
+    int32_t accel_one_g;       /* 1 g in accel units, 0..STILL_ONE_G_MAX; 0 = no norm test */
+    uint32_t accel_norm_tol;   /* | |a| - 1 g | limit, accel units, < accel_one_g */
+    uint32_t accel_drift_max;  /* window-to-window accel mean change limit per axis; 0 = off */
 };
 
 /* Statistics of the last complete window. */
 struct still_window {
-    int32_t gyro_mean[3], accel_mean[3];    /* rounded to nearest */
-    uint64_t gyro_var[3], accel_var[3];     /* unit^2, rounded down */
+    int32_t gyro_mean[3], accel_mean[3]; /* rounded to nearest */
+    uint64_t gyro_var[3], accel_var[3];  /* unit^2, rounded down */
     bool quiet;
-    uint8_t why;                            /* STILL_WHY_* bits, 0 when quiet */
+    uint8_t why; /* STILL_WHY_* bits, 0 when quiet */
 };
 
 struct still {
     struct still_cfg cfg;
-    int32_t ref[6];             /* first sample of the window: gyro x y z, accel x y z */
-    int64_t sum[6];             /* sum of d */
-    uint64_t sum2[6];           /* sum of d^2 */
-    uint32_t n;                 /* samples in the current window */
-    bool overrange;             /* a |d| > STILL_DEV_MAX in the current window */
-    uint32_t quiet_run;         /* consecutive quiet windows (saturating) */
-    uint32_t windows;           /* complete windows since init/reset (saturating) */
-    uint32_t motion_windows;    /* non-quiet windows since init/reset (saturating) */
+    int32_t ref[6];          /* first sample of the window: gyro x y z, accel x y z */
+    int64_t sum[6];          /* sum of d */
+    uint64_t sum2[6];        /* sum of d^2 */
+    uint32_t n;              /* samples in the current window */
+    bool overrange;          /* a |d| > STILL_DEV_MAX in the current window */
+    uint32_t quiet_run;      /* consecutive quiet windows (saturating) */
+    uint32_t windows;        /* complete windows since init/reset (saturating) */
+    uint32_t motion_windows; /* non-quiet windows since init/reset (saturating) */
     enum still_state state;
     struct still_window last;
-    bool ready;                 /* init succeeded */
+    bool ready; /* init succeeded */
 };
 
 /* Validate cfg (INC_ERR_INVAL for a field outside its range, INC_ERR_NULL) and start. */
@@ -118,7 +118,7 @@ void still_restart_window(struct still *s);
  * this sample completed a window (the state and still_last() were updated). */
 int still_push(struct still *s, const int32_t gyro[3], const int32_t accel[3], bool *window_done);
 
-enum still_state still_state_get(const struct still *s);   /* STILL_UNKNOWN for NULL */
+enum still_state still_state_get(const struct still *s); /* STILL_UNKNOWN for NULL */
 bool still_at_rest(const struct still *s);
 /* The last complete window, or NULL before the first. */
 const struct still_window *still_last(const struct still *s);
@@ -134,9 +134,9 @@ uint32_t still_window_count(const struct still *s);
 #define STILL_THERMAL_SPAN_MAX 32u
 
 struct still_thermal_cfg {
-    uint32_t avg_n;         /* temperature samples averaged per point, 1..2^31 */
-    uint32_t span;          /* points in the window, 2..STILL_THERMAL_SPAN_MAX */
-    uint32_t max_change;    /* settled when max - min of the window's points <= this (temp unit) */
+    uint32_t avg_n;      /* temperature samples averaged per point, 1..2^31 */
+    uint32_t span;       /* points in the window, 2..STILL_THERMAL_SPAN_MAX */
+    uint32_t max_change; /* settled when max - min of the window's points <= this (temp unit) */
 };
 
 struct still_thermal {
@@ -144,7 +144,7 @@ struct still_thermal {
     struct avg_block blk;
     int32_t pts[STILL_THERMAL_SPAN_MAX];
     uint32_t head, count;
-    uint32_t change;        /* max - min of the current window (valid when count == span) */
+    uint32_t change; /* max - min of the current window (valid when count == span) */
     bool settled;
     bool ready;
 };

@@ -62,9 +62,9 @@ extern "C" {
 #endif
 
 enum tilt_mode {
-    TILT_MODE_FEEDBACK = 0,      /* seed 004 step 4, offset fed back with the sign corrected */
-    TILT_MODE_SEED_PRINTED = 1,  /* seed 004 step 4 as printed (drifts with a gyro bias) */
-    TILT_MODE_KF2 = 2,           /* two-state (angle, gyro bias) Kalman filter */
+    TILT_MODE_FEEDBACK = 0,     /* seed 004 step 4, offset fed back with the sign corrected */
+    TILT_MODE_SEED_PRINTED = 1, /* seed 004 step 4 as printed (drifts with a gyro bias) */
+    TILT_MODE_KF2 = 2,          /* two-state (angle, gyro bias) Kalman filter */
 };
 
 enum { TILT_ROLL = 0, TILT_PITCH = 1, TILT_AXES = 2 };
@@ -88,30 +88,30 @@ enum { TILT_ROLL = 0, TILT_PITCH = 1, TILT_AXES = 2 };
 
 /* Tuning of one axis. */
 struct tilt_axis_config {
-    int64_t q_angle;    /* angle process noise density, deg^2/s * 2^48 (the gyro's ARW^2);
+    int64_t q_angle;  /* angle process noise density, deg^2/s * 2^48 (the gyro's ARW^2);
                          * Q2 = q_angle * dt per step. 1 .. KF_P_MAX */
-    int64_t q_bias;     /* KF2: bias random-walk density, (deg/s)^2/s * 2^48 (RRW^2). 0 .. KF_P_MAX */
-    int64_t r_angle;    /* R2: variance of the accelerometer angle, deg^2 * 2^48. 1 .. KF_P_MAX */
-    int64_t p0_angle;   /* angle variance at (re)start, deg^2 * 2^48. 0 .. TILT_VAR_CAP */
-    int64_t p0_bias;    /* KF2: bias variance at start, (deg/s)^2 * 2^48. 0 .. KF_P_MAX */
+    int64_t q_bias;   /* KF2: bias random-walk density, (deg/s)^2/s * 2^48 (RRW^2). 0 .. KF_P_MAX */
+    int64_t r_angle;  /* R2: variance of the accelerometer angle, deg^2 * 2^48. 1 .. KF_P_MAX */
+    int64_t p0_angle; /* angle variance at (re)start, deg^2 * 2^48. 0 .. TILT_VAR_CAP */
+    int64_t p0_bias;  /* KF2: bias variance at start, (deg/s)^2 * 2^48. 0 .. KF_P_MAX */
     fx_q30_t bias_gain; /* FEEDBACK: Kb in [0, 1] (Q30); tilt_feedback_gain() gives the
                          * critically damped value K2/4 */
     fx_q16_t bias0_dps; /* offset at start (e.g. from calibration), deg/s, |.| < gyro_limit_dps */
 };
 
 struct tilt_config {
-    uint32_t mode;                          /* enum tilt_mode */
+    uint32_t mode;                           /* enum tilt_mode */
     struct tilt_axis_config axis[TILT_AXES]; /* roll, pitch */
-    fx_q16_t accel_tol_g;                   /* | |a| - 1 g | above this: rejected. (0, 0.5] g */
-    fx_q16_t gyro_limit_dps;                /* |w| at or above: rejected as saturated. > 0 */
-    uint32_t dt_max_ns;                     /* longer steps restart. 1 .. 10^9 ns */
+    fx_q16_t accel_tol_g;                    /* | |a| - 1 g | above this: rejected. (0, 0.5] g */
+    fx_q16_t gyro_limit_dps;                 /* |w| at or above: rejected as saturated. > 0 */
+    uint32_t dt_max_ns;                      /* longer steps restart. 1 .. 10^9 ns */
 };
 
 /* One sample. */
 struct tilt_input {
-    fx_q16_t accel_g[3];   /* calibrated specific force, g, sensor frame */
-    fx_q16_t gyro_dps[3];  /* calibrated angular rate, deg/s; [2] (z) is not used */
-    uint32_t flags;        /* TILT_IN_* */
+    fx_q16_t accel_g[3];  /* calibrated specific force, g, sensor frame */
+    fx_q16_t gyro_dps[3]; /* calibrated angular rate, deg/s; [2] (z) is not used */
+    uint32_t flags;       /* TILT_IN_* */
 };
 
 struct tilt_output {
@@ -124,20 +124,20 @@ struct tilt_output {
 };
 
 struct tilt_axis_state {
-    struct kf kf;   /* n = 1 (FEEDBACK, SEED_PRINTED) or 2 (KF2: angle, bias) */
-    int64_t off;    /* FEEDBACK, SEED_PRINTED: gyro offset, deg/s * 2^32 */
+    struct kf kf;                      /* n = 1 (FEEDBACK, SEED_PRINTED) or 2 (KF2: angle, bias) */
+    int64_t off;                       /* FEEDBACK, SEED_PRINTED: gyro offset, deg/s * 2^32 */
     int64_t q_angle_step, q_bias_step; /* q_angle dt, q_bias dt for dt_ns_cached (P format) */
 };
 
 struct tilt {
     struct tilt_config cfg;
     struct tilt_axis_state ax[TILT_AXES];
-    uint64_t last_ns;   /* tilt_step_at: time of the previous sample */
+    uint64_t last_ns;      /* tilt_step_at: time of the previous sample */
     int64_t dt_q30_cached; /* dt_ns_cached in seconds, Q30 (the conversion is a 64-bit division) */
     uint32_t dt_ns_cached; /* 0: nothing cached */
-    bool have_time;     /* tilt_step_at: last_ns is set */
-    bool started;       /* an accepted accelerometer sample has started the angles */
-    bool ready;         /* initialised */
+    bool have_time;        /* tilt_step_at: last_ns is set */
+    bool started;          /* an accepted accelerometer sample has started the angles */
+    bool ready;            /* initialised */
 };
 
 /* A documented baseline (docs/kalman.md, "Default tuning"): FEEDBACK, ADIS1636x/1640x-class gyro

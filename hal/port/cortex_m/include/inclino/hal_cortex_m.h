@@ -76,7 +76,7 @@ enum hal_cm_timebase {
 };
 
 struct hal_cm_config {
-    uint32_t core_hz;                   /* core clock in Hz, HAL_CYC_HZ_MIN..HAL_CYC_HZ_MAX */
+    uint32_t core_hz; /* core clock in Hz, HAL_CYC_HZ_MIN..HAL_CYC_HZ_MAX */
     enum hal_cm_timebase timebase;
     const struct hal_cm_gpio_ops *gpio; /* required; &hal_cm_gpio_none when there are no pins */
     void *gpio_ctx;                     /* passed to every gpio operation */
@@ -95,9 +95,9 @@ struct hal_cm_irq_slot {
 struct hal_cm {
     struct hal_cm_config cfg;
     struct hal_cyc_conv conv;
-    uint64_t wraps;          /* SysTick: counter transitions to 0; DWT: CYCCNT overflows */
-    uint32_t dwt_last;       /* DWT: last CYCCNT read */
-    uint64_t sleep_min_ns;   /* irq_wait sleeps (WFI) only when the deadline is further away */
+    uint64_t wraps;        /* SysTick: counter transitions to 0; DWT: CYCCNT overflows */
+    uint32_t dwt_last;     /* DWT: last CYCCNT read */
+    uint64_t sleep_min_ns; /* irq_wait sleeps (WFI) only when the deadline is further away */
     struct hal_cm_irq_slot irq[HAL_CM_IRQ_SLOTS];
     volatile uint32_t irq_count; /* callbacks run (dispatch increments it) */
     uint32_t irq_seen;           /* irq_count when irq_wait last returned 0 */

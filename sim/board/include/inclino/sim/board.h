@@ -33,18 +33,18 @@ enum sim_board_pin {
 #define SIM_BOARD_CS(n) ((unsigned)SIM_BOARD_CS0 + (unsigned)(n))
 #define SIM_BOARD_DR(n) ((unsigned)SIM_BOARD_DR0 + (unsigned)(n))
 #define SIM_BOARD_RST(n) ((unsigned)SIM_BOARD_RST0 + (unsigned)(n))
-#define SIM_BOARD_SPI_MASK                                                                    \
+#define SIM_BOARD_SPI_MASK                                                                        \
     (SIM_PIN_MASK(SIM_BOARD_SCLK) | SIM_PIN_MASK(SIM_BOARD_MOSI) | SIM_PIN_MASK(SIM_BOARD_MISO) | \
-     SIM_PIN_MASK(SIM_BOARD_CS0) | SIM_PIN_MASK(SIM_BOARD_CS0 + 1) |                          \
+     SIM_PIN_MASK(SIM_BOARD_CS0) | SIM_PIN_MASK(SIM_BOARD_CS0 + 1) |                              \
      SIM_PIN_MASK(SIM_BOARD_CS0 + 2) | SIM_PIN_MASK(SIM_BOARD_CS0 + 3))
 
 struct sim_board {
     struct sim_clock clk;
-    struct sim_violation_log log;    /* contention and every model that reports here */
+    struct sim_violation_log log; /* contention and every model that reports here */
     struct sim_pinbus bus;
     struct hal_sim port;
     struct hal hal;
-    struct spi_bitbang spi;          /* the firmware's SPI master; &spi.bus is the spi_bus */
+    struct spi_bitbang spi; /* the firmware's SPI master; &spi.bus is the spi_bus */
 };
 
 /* Set up everything above. Returns 0 or an error from the parts. */

@@ -35,41 +35,41 @@ extern "C" {
 
 #define SIM_CALPART_T_MIN (-20.0) /* seed 002's temperature range, degC */
 #define SIM_CALPART_T_MAX 60.0
-#define SIM_CALPART_T_MID 20.0    /* centre and half span of that range: u = -1..1 */
+#define SIM_CALPART_T_MID 20.0 /* centre and half span of that range: u = -1..1 */
 #define SIM_CALPART_T_HALF 40.0
 
 /* Seed 002's magnitudes that sim_calpart_normalise() imposes on a part. */
-#define SIM_CALPART_PAPER_BIAS_SPREAD_G 0.014      /* Bmax - Bmin over the 10 degC points */
-#define SIM_CALPART_PAPER_SCALE_PPM_PER_C 151.6    /* (Kmax-Kmin)/Kmean * 1e6 / 80 */
+#define SIM_CALPART_PAPER_BIAS_SPREAD_G 0.014   /* Bmax - Bmin over the 10 degC points */
+#define SIM_CALPART_PAPER_SCALE_PPM_PER_C 151.6 /* (Kmax-Kmin)/Kmean * 1e6 / 80 */
 
 struct sim_calpart_tcurve {
-    double y0;        /* baseline (g for bias; g/g for scale factor) */
-    double height;    /* Lorentz peak height above y0 at T = centre */
-    double centre_c;  /* Lorentz centre, degC (may lie outside the measured range) */
-    double width_c;   /* Lorentz full width at half maximum, degC (> 0) */
-    double lin;       /* coefficient of u */
-    double cubic;     /* coefficient of u^3: the "small cubic term" */
-    double hyst;      /* hysteresis half amplitude: heating branch +hyst, cooling branch -hyst */
+    double y0;       /* baseline (g for bias; g/g for scale factor) */
+    double height;   /* Lorentz peak height above y0 at T = centre */
+    double centre_c; /* Lorentz centre, degC (may lie outside the measured range) */
+    double width_c;  /* Lorentz full width at half maximum, degC (> 0) */
+    double lin;      /* coefficient of u */
+    double cubic;    /* coefficient of u^3: the "small cubic term" */
+    double hyst;     /* hysteresis half amplitude: heating branch +hyst, cooling branch -hyst */
 };
 
 struct sim_calpart_params {
-    struct sim_calpart_tcurve acc_bias[3];   /* accelerometer bias, g */
-    struct sim_calpart_tcurve acc_scale[3];  /* accelerometer scale factor, g/g (nominal 1) */
-    double acc_axis[3][3];                   /* misalignment rows (identity = ideal) */
-    double acc_nl2[3];                       /* quadratic nonlinearity, 1/g */
-    double acc_nl3[3];                       /* cubic nonlinearity, 1/g^2 */
-    double acc_noise_g;                      /* white noise rms per sample, g */
-    double gyro_bias_dps[3];                 /* gyro bias, deg/s */
-    double gyro_scale[3];                    /* gyro scale factor (nominal 1) */
-    double gyro_noise_dps;                   /* white noise rms per sample, deg/s */
-    double hyst_travel_c;                    /* temperature travel that switches branches, > 0 */
+    struct sim_calpart_tcurve acc_bias[3];  /* accelerometer bias, g */
+    struct sim_calpart_tcurve acc_scale[3]; /* accelerometer scale factor, g/g (nominal 1) */
+    double acc_axis[3][3];                  /* misalignment rows (identity = ideal) */
+    double acc_nl2[3];                      /* quadratic nonlinearity, 1/g */
+    double acc_nl3[3];                      /* cubic nonlinearity, 1/g^2 */
+    double acc_noise_g;                     /* white noise rms per sample, g */
+    double gyro_bias_dps[3];                /* gyro bias, deg/s */
+    double gyro_scale[3];                   /* gyro scale factor (nominal 1) */
+    double gyro_noise_dps;                  /* white noise rms per sample, deg/s */
+    double hyst_travel_c;                   /* temperature travel that switches branches, > 0 */
 };
 
 struct sim_calpart {
     struct sim_calpart_params p;
     struct sim_rng rng;
-    double m;          /* hysteresis state, [-1, 1] */
-    double last_t;     /* temperature of the previous sample */
+    double m;      /* hysteresis state, [-1, 1] */
+    double last_t; /* temperature of the previous sample */
     int have_last;
 };
 

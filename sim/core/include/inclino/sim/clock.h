@@ -31,8 +31,8 @@ typedef void (*sim_event_fn)(void *arg, uint64_t now_ns);
 
 struct sim_event {
     uint64_t t_ns;
-    uint32_t seq;      /* scheduling order, breaks ties */
-    uint32_t id;       /* handle returned to the scheduler; 0 = free slot */
+    uint32_t seq; /* scheduling order, breaks ties */
+    uint32_t id;  /* handle returned to the scheduler; 0 = free slot */
     sim_event_fn fn;
     void *arg;
 };
@@ -41,9 +41,9 @@ struct sim_clock {
     uint64_t now_ns;
     uint32_t next_seq;
     uint32_t next_id;
-    bool overflowed;                 /* a schedule call found the queue full */
-    unsigned count;                  /* events pending */
-    unsigned hi;                     /* slots [hi, MAX) are free: bounds the scans */
+    bool overflowed; /* a schedule call found the queue full */
+    unsigned count;  /* events pending */
+    unsigned hi;     /* slots [hi, MAX) are free: bounds the scans */
     struct sim_event ev[SIM_CLOCK_MAX_EVENTS];
 };
 

@@ -24,10 +24,10 @@ extern "C" {
 
 /* True physical inputs of a part at one instant (sensor frame). */
 struct sim_inertial_input {
-    double rate_dps[3];   /* angular rate about x, y, z in deg/s */
-    double accel_g[3];    /* specific force along x, y, z in g (at rest, level: z = +1 g) */
-    double temp_c;        /* die temperature in deg C */
-    double supply_v;      /* supply voltage in V */
+    double rate_dps[3]; /* angular rate about x, y, z in deg/s */
+    double accel_g[3];  /* specific force along x, y, z in g (at rest, level: z = +1 g) */
+    double temp_c;      /* die temperature in deg C */
+    double supply_v;    /* supply voltage in V */
 };
 
 /* Physics hook: fill *in with the true inputs at virtual time t_ns. */
@@ -72,8 +72,8 @@ struct sim_rng {
 };
 void sim_rng_seed(struct sim_rng *r, uint64_t seed);
 uint32_t sim_rng_u32(struct sim_rng *r);
-double sim_rng_uniform(struct sim_rng *r);   /* [0, 1) */
-double sim_rng_gauss(struct sim_rng *r);     /* standard normal (Box-Muller, one value per call) */
+double sim_rng_uniform(struct sim_rng *r); /* [0, 1) */
+double sim_rng_gauss(struct sim_rng *r);   /* standard normal (Box-Muller, one value per call) */
 
 #ifdef __cplusplus
 }

@@ -40,27 +40,27 @@ typedef void (*sim_pin_change_fn)(void *arg, unsigned pin, bool level, uint64_t 
 struct sim_pin_listener {
     sim_pin_change_fn fn;
     void *arg;
-    uint32_t mask;                  /* pins of interest: SIM_PIN_MASK(a) | SIM_PIN_MASK(b) */
+    uint32_t mask; /* pins of interest: SIM_PIN_MASK(a) | SIM_PIN_MASK(b) */
     struct sim_pin_listener *next;
 };
 
 struct sim_pin {
-    const char *name;               /* NULL: pin not defined */
+    const char *name; /* NULL: pin not defined */
     enum sim_pull pull;
-    bool level;                     /* resolved level */
+    bool level; /* resolved level */
     bool master_drives;
     bool master_level;
-    uint16_t dev_mask;              /* devices driving */
-    uint16_t dev_level;             /* their levels */
+    uint16_t dev_mask;  /* devices driving */
+    uint16_t dev_level; /* their levels */
 };
 
 struct sim_pinbus {
     struct sim_clock *clk;
-    struct sim_violation_log *log;  /* contention reports; may be NULL */
+    struct sim_violation_log *log; /* contention reports; may be NULL */
     struct sim_pin pin[SIM_PINBUS_MAX_PINS];
     struct sim_pin_listener *listeners;
     unsigned devices;
-    uint64_t changes;               /* resolved-level changes so far (statistics) */
+    uint64_t changes; /* resolved-level changes so far (statistics) */
 };
 
 void sim_pinbus_init(struct sim_pinbus *bus, struct sim_clock *clk, struct sim_violation_log *log);

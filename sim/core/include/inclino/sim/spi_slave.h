@@ -36,7 +36,7 @@
 extern "C" {
 #endif
 
-#define SIM_SPI_MODE_AUTO_0_3 4u  /* sense CPOL at CS fall; CPHA = CPOL (modes 0 and 3) */
+#define SIM_SPI_MODE_AUTO_0_3 4u /* sense CPOL at CS fall; CPHA = CPOL (modes 0 and 3) */
 #define SIM_SPI_FLAG(kind) (1u << (unsigned)(kind))
 
 struct sim_spi_timing {
@@ -62,15 +62,15 @@ struct sim_spi_slave_ops {
 };
 
 struct sim_spi_slave_cfg {
-    const char *name;                     /* part name for violation reports */
+    const char *name; /* part name for violation reports */
     struct sim_pinbus *bus;
-    unsigned cs, sclk, mosi, miso;        /* pin numbers on the bus */
-    uint8_t mode;                         /* 0..3 or SIM_SPI_MODE_AUTO_0_3 */
-    uint8_t bits;                         /* 8 or 16 */
+    unsigned cs, sclk, mosi, miso; /* pin numbers on the bus */
+    uint8_t mode;                  /* 0..3 or SIM_SPI_MODE_AUTO_0_3 */
+    uint8_t bits;                  /* 8 or 16 */
     struct sim_spi_timing timing;
     const struct sim_spi_slave_ops *ops;
     void *model;
-    struct sim_violation_log *log;        /* where violations go (may be NULL) */
+    struct sim_violation_log *log; /* where violations go (may be NULL) */
 };
 
 #define SIM_SPI_MISO_QUEUE 8u
@@ -78,24 +78,27 @@ struct sim_spi_slave_cfg {
 struct sim_spi_slave {
     struct sim_spi_slave_cfg cfg;
     struct sim_pin_listener listener;
-    unsigned dev;                 /* device id on the pin bus */
+    unsigned dev; /* device id on the pin bus */
     bool selected;
     bool ever_selected;
-    uint8_t cpol, cpha;           /* mode of the current frame */
-    uint8_t bits_in;              /* bits received of the current word */
-    uint8_t out_bit;              /* next bit index of `out` to drive */
-    uint16_t in;                  /* shift-in register */
-    uint16_t out;                 /* word being shifted out */
-    unsigned words;               /* whole words this frame */
-    unsigned flags;               /* violations this frame */
-    bool edge_seen;               /* an SCLK edge occurred in this frame */
-    bool mosi_prev;               /* MOSI level before its last change */
+    uint8_t cpol, cpha; /* mode of the current frame */
+    uint8_t bits_in;    /* bits received of the current word */
+    uint8_t out_bit;    /* next bit index of `out` to drive */
+    uint16_t in;        /* shift-in register */
+    uint16_t out;       /* word being shifted out */
+    unsigned words;     /* whole words this frame */
+    unsigned flags;     /* violations this frame */
+    bool edge_seen;     /* an SCLK edge occurred in this frame */
+    bool mosi_prev;     /* MOSI level before its last change */
     uint64_t t_cs_fall, t_cs_rise, t_last_edge, t_last_sample, t_mosi_change;
     uint32_t frame_min_period_ns; /* shortest sampling-edge interval seen in this CS frame
                                      (UINT32_MAX before the second sampling edge); lets a model
                                      check a limit that depends on the command, e.g. burst */
     /* MISO changes waiting for their tDAV, in order. */
-    struct { int handle; bool level; } q[SIM_SPI_MISO_QUEUE];
+    struct {
+        int handle;
+        bool level;
+    } q[SIM_SPI_MISO_QUEUE];
     unsigned q_head, q_len;
     /* statistics */
     uint32_t frames, total_words;

@@ -17,25 +17,25 @@ extern "C" {
 #endif
 
 enum sim_violation_kind {
-    SIM_VIOL_SCLK_FAST = 0,  /* SCLK period (or a half period) shorter than the part allows */
-    SIM_VIOL_CS_SETUP,       /* first SCLK edge too soon after CS fell */
-    SIM_VIOL_CS_HOLD,        /* CS rose too soon after the last SCLK edge */
-    SIM_VIOL_STALL,          /* CS fell too soon after it last rose (tSTALL) */
-    SIM_VIOL_MOSI_SETUP,     /* MOSI changed too close before a sampling edge */
-    SIM_VIOL_SCLK_IDLE,      /* SCLK not at the mode's idle level when CS fell */
-    SIM_VIOL_PARTIAL_WORD,   /* CS rose in the middle of a word */
-    SIM_VIOL_CONTENTION,     /* two drivers on one pin disagree */
-    SIM_VIOL_BUSY,           /* the part was addressed while busy with a command */
-    SIM_VIOL_PROTOCOL,       /* model-specific protocol error (bad command, frame length) */
+    SIM_VIOL_SCLK_FAST = 0, /* SCLK period (or a half period) shorter than the part allows */
+    SIM_VIOL_CS_SETUP,      /* first SCLK edge too soon after CS fell */
+    SIM_VIOL_CS_HOLD,       /* CS rose too soon after the last SCLK edge */
+    SIM_VIOL_STALL,         /* CS fell too soon after it last rose (tSTALL) */
+    SIM_VIOL_MOSI_SETUP,    /* MOSI changed too close before a sampling edge */
+    SIM_VIOL_SCLK_IDLE,     /* SCLK not at the mode's idle level when CS fell */
+    SIM_VIOL_PARTIAL_WORD,  /* CS rose in the middle of a word */
+    SIM_VIOL_CONTENTION,    /* two drivers on one pin disagree */
+    SIM_VIOL_BUSY,          /* the part was addressed while busy with a command */
+    SIM_VIOL_PROTOCOL,      /* model-specific protocol error (bad command, frame length) */
     SIM_VIOL_KIND_COUNT
 };
 
 struct sim_violation {
     uint64_t t_ns;
     enum sim_violation_kind kind;
-    const char *source;      /* the part or pin that saw it (static string) */
-    uint32_t measured_ns;    /* what the master did (0 when not a duration) */
-    uint32_t limit_ns;       /* what the part requires (0 when not a duration) */
+    const char *source;   /* the part or pin that saw it (static string) */
+    uint32_t measured_ns; /* what the master did (0 when not a duration) */
+    uint32_t limit_ns;    /* what the part requires (0 when not a duration) */
 };
 
 #ifndef SIM_VIOLATION_LOG_MAX

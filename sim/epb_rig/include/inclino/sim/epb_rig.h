@@ -50,14 +50,14 @@ enum epb_rig_part {
 };
 
 struct epb_rig_part_info {
-    const char *name;        /* "adis16405", "sca3000-d01", ... (command-line name) */
-    bool adis;               /* ADIS1636x/1640x (else SCA3000) */
-    int sim_variant;         /* enum sim_adis_imu_variant or enum sim_sca3000_variant */
-    double acc_lsb_g;        /* accelerometer output LSB, g */
-    double gyro_lsb_dps;     /* gyro LSB (+-300 deg/s range), deg/s; 0 without gyro */
-    double temp_lsb_c;       /* temperature LSB, degC; 0 without temperature output */
-    double rate_sps;         /* output rate the firmware runs the part at */
-    double range_g;          /* accelerometer output range (saturation), g */
+    const char *name;    /* "adis16405", "sca3000-d01", ... (command-line name) */
+    bool adis;           /* ADIS1636x/1640x (else SCA3000) */
+    int sim_variant;     /* enum sim_adis_imu_variant or enum sim_sca3000_variant */
+    double acc_lsb_g;    /* accelerometer output LSB, g */
+    double gyro_lsb_dps; /* gyro LSB (+-300 deg/s range), deg/s; 0 without gyro */
+    double temp_lsb_c;   /* temperature LSB, degC; 0 without temperature output */
+    double rate_sps;     /* output rate the firmware runs the part at */
+    double range_g;      /* accelerometer output range (saturation), g */
 };
 
 /* The table entry of a part (NULL when out of range) and the part of a command-line name. */
@@ -66,30 +66,30 @@ int epb_rig_part_from_name(const char *name, enum epb_rig_part *out);
 
 enum epb_rig_mode { EPB_RIG_STATION = 0, EPB_RIG_VEHICLE = 1 };
 
-#define EPB_RIG_ORDERS 4      /* engine orders modelled */
-#define EPB_RIG_BUMPS 16      /* bumps ringing at once (the oldest is dropped) */
+#define EPB_RIG_ORDERS 4 /* engine orders modelled */
+#define EPB_RIG_BUMPS 16 /* bumps ringing at once (the oldest is dropped) */
 
 struct epb_rig_order {
-    double order;            /* multiple of the crank frequency */
-    double amp_g[3];         /* x y z, g */
-    double amp_dps[3];       /* angular vibration, deg/s */
+    double order;      /* multiple of the crank frequency */
+    double amp_g[3];   /* x y z, g */
+    double amp_dps[3]; /* angular vibration, deg/s */
 };
 
 struct epb_rig_vehicle {
-    double slope_deg;        /* nose up positive (10 % grade = 5.71 deg) */
-    double roll_deg;         /* cross slope, left side up positive */
-    double temp_c;           /* die temperature */
-    double idle_rpm;         /* 0: engine off */
+    double slope_deg; /* nose up positive (10 % grade = 5.71 deg) */
+    double roll_deg;  /* cross slope, left side up positive */
+    double temp_c;    /* die temperature */
+    double idle_rpm;  /* 0: engine off */
     struct epb_rig_order orders[EPB_RIG_ORDERS];
-    double bump_rate_hz;     /* mean bumps per second (0: none) */
-    double bump_amp_g;       /* largest bump, z, g */
-    double bump_pitch_deg;   /* largest bump, pitch, deg */
-    double bump_freq_hz;     /* body bounce frequency */
-    double bump_zeta;        /* its damping ratio */
-    double drive_off_s;      /* < 0: parked for good; else the car drives off at this time */
-    double drive_accel_g;    /* longitudinal acceleration reached 1 s after drive-off */
-    double drive_squat_deg;  /* pitch change while accelerating */
-    double road_noise_g;     /* rms road vibration while driving (z; x, y at 40 %) */
+    double bump_rate_hz;    /* mean bumps per second (0: none) */
+    double bump_amp_g;      /* largest bump, z, g */
+    double bump_pitch_deg;  /* largest bump, pitch, deg */
+    double bump_freq_hz;    /* body bounce frequency */
+    double bump_zeta;       /* its damping ratio */
+    double drive_off_s;     /* < 0: parked for good; else the car drives off at this time */
+    double drive_accel_g;   /* longitudinal acceleration reached 1 s after drive-off */
+    double drive_squat_deg; /* pitch change while accelerating */
+    double road_noise_g;    /* rms road vibration while driving (z; x, y at 40 %) */
 };
 
 /* The default parked car: 10 % grade, 25 degC, engine idling at 750 rpm (four-cylinder orders

@@ -16,7 +16,7 @@
 #include "inclino/simflash.h"
 
 struct epb_rig_bump {
-    double t0;               /* start, s (scenario time) */
+    double t0; /* start, s (scenario time) */
     double amp_g, pitch_deg;
 };
 
@@ -33,17 +33,17 @@ struct epb_rig {
     uint8_t flash_mem[2048];
     /* physics */
     enum epb_rig_mode mode;
-    int face;                /* enum cal_face (station), or -1: held at station_dir */
-    double station_dir[3];   /* station: the specific force the part feels, g (part frame) */
+    int face;              /* enum cal_face (station), or -1: held at station_dir */
+    double station_dir[3]; /* station: the specific force the part feels, g (part frame) */
     double station_temp_c;
     struct epb_rig_vehicle veh;
-    uint64_t t0_ns;          /* start of the vehicle scenario */
+    uint64_t t0_ns; /* start of the vehicle scenario */
     double phase[EPB_RIG_ORDERS][3];
-    struct sim_rng rng;      /* bumps and road noise */
+    struct sim_rng rng; /* bumps and road noise */
     double next_bump_s;
     struct epb_rig_bump bumps[EPB_RIG_BUMPS];
     unsigned bump_count, bump_total;
-    double last_pitch_deg;   /* true pitch of the last physics sample (base + rocking) */
+    double last_pitch_deg; /* true pitch of the last physics sample (base + rocking) */
     /* firmware side (re-created at every power-up) */
     struct adis_imu imu;
     struct sca3000 sca_dev;

@@ -41,8 +41,8 @@
 extern "C" {
 #endif
 
-#define SIM_NOISE_GM_MAX 16u      /* Gauss-Markov components per channel (3 per decade) */
-#define SIM_NOISE_CHANNELS 6u     /* 0..2 gyro x, y, z; 3..5 accel x, y, z */
+#define SIM_NOISE_GM_MAX 16u  /* Gauss-Markov components per channel (3 per decade) */
+#define SIM_NOISE_CHANNELS 6u /* 0..2 gyro x, y, z; 3..5 accel x, y, z */
 #define SIM_NOISE_GYRO(axis) (axis)
 #define SIM_NOISE_ACCEL(axis) (3u + (axis))
 
@@ -52,44 +52,44 @@ extern "C" {
 /* Error terms of one channel. All fields >= 0 except bias and temp_coeff (any sign); zero turns
  * a term off. Units: the channel's unit u (deg/s for a gyro, g for an accelerometer). */
 struct sim_noise_axis {
-    double bias;              /* constant bias, u */
-    double temp_coeff;        /* bias drift, u per degC away from 25 degC (input temp_c) */
-    double white;             /* N: white noise density, u/sqrt(Hz) */
-    double bias_instability;  /* B: u; correlated part's Allan floor = 0.664 B */
-    double bi_tc_min_s;       /* shortest Gauss-Markov correlation time, s (> 0 when B > 0) */
-    double bi_tc_max_s;       /* longest, s; bi_tc_min_s < bi_tc_max_s <= 1e5 * bi_tc_min_s */
-    double rrw;               /* K: rate random walk, u/sqrt(s) */
-    double quantum;           /* element quantisation step, u (0: none) */
+    double bias;             /* constant bias, u */
+    double temp_coeff;       /* bias drift, u per degC away from 25 degC (input temp_c) */
+    double white;            /* N: white noise density, u/sqrt(Hz) */
+    double bias_instability; /* B: u; correlated part's Allan floor = 0.664 B */
+    double bi_tc_min_s;      /* shortest Gauss-Markov correlation time, s (> 0 when B > 0) */
+    double bi_tc_max_s;      /* longest, s; bi_tc_min_s < bi_tc_max_s <= 1e5 * bi_tc_min_s */
+    double rrw;              /* K: rate random walk, u/sqrt(s) */
+    double quantum;          /* element quantisation step, u (0: none) */
 };
 
 struct sim_noise_cfg {
-    struct sim_noise_axis ch[SIM_NOISE_CHANNELS];   /* see SIM_NOISE_GYRO / SIM_NOISE_ACCEL */
-    double temp_white_c;      /* white noise on the temperature input, degC rms per sample */
+    struct sim_noise_axis ch[SIM_NOISE_CHANNELS]; /* see SIM_NOISE_GYRO / SIM_NOISE_ACCEL */
+    double temp_white_c; /* white noise on the temperature input, degC rms per sample */
     uint64_t seed;
 };
 
 /* Internal state of one channel (read-only for callers). */
 struct sim_noise_chan {
-    unsigned n_gm;                       /* Gauss-Markov components in use */
-    double gm_tc[SIM_NOISE_GM_MAX];      /* correlation times, s */
-    double gm_sigma;                     /* stationary standard deviation of each component */
-    double gm_x[SIM_NOISE_GM_MAX];       /* states */
-    double gm_a[SIM_NOISE_GM_MAX];       /* exp(-dt / tc) for the cached dt */
-    double gm_w[SIM_NOISE_GM_MAX];       /* gm_sigma * sqrt(1 - a^2) */
-    double rrw_x;                        /* rate random walk state */
-    double white_sd;                     /* N / sqrt(dt) */
-    double rrw_sd;                       /* K * sqrt(dt) */
-    double last_bias;                    /* correlated bias of the last sample (no white noise) */
+    unsigned n_gm;                  /* Gauss-Markov components in use */
+    double gm_tc[SIM_NOISE_GM_MAX]; /* correlation times, s */
+    double gm_sigma;                /* stationary standard deviation of each component */
+    double gm_x[SIM_NOISE_GM_MAX];  /* states */
+    double gm_a[SIM_NOISE_GM_MAX];  /* exp(-dt / tc) for the cached dt */
+    double gm_w[SIM_NOISE_GM_MAX];  /* gm_sigma * sqrt(1 - a^2) */
+    double rrw_x;                   /* rate random walk state */
+    double white_sd;                /* N / sqrt(dt) */
+    double rrw_sd;                  /* K * sqrt(dt) */
+    double last_bias;               /* correlated bias of the last sample (no white noise) */
 };
 
 struct sim_noise {
     struct sim_noise_cfg cfg;
     struct sim_rng rng;
     struct sim_noise_chan ch[SIM_NOISE_CHANNELS];
-    double dt_s;                         /* interval the coefficients are cached for (0: none) */
-    double spare;                        /* second deviate of the last polar-method pair */
+    double dt_s;  /* interval the coefficients are cached for (0: none) */
+    double spare; /* second deviate of the last polar-method pair */
     bool spare_valid;
-    uint64_t samples;                    /* apply() calls so far */
+    uint64_t samples; /* apply() calls so far */
 };
 
 /*
@@ -144,14 +144,14 @@ int sim_noise_gm_layout(const struct sim_noise_axis *ax, unsigned *n_gm, double 
  * Unfiltered noise at 819.2 SPS: 0.031 * sqrt(819.2) = 0.89 deg/s rms, within seed 003's "less
  * than 1 deg/s rms".
  */
-#define SIM_NOISE_ADIS_GYRO_ARW 0.031      /* deg/s/sqrt(Hz) */
-#define SIM_NOISE_ADIS_GYRO_BI 0.0068      /* deg/s */
-#define SIM_NOISE_ADIS_GYRO_TC_MIN 0.5     /* s */
-#define SIM_NOISE_ADIS_GYRO_TC_MAX 2000.0  /* s */
-#define SIM_NOISE_ADIS_GYRO_RRW 0.00045    /* deg/s/sqrt(s) */
+#define SIM_NOISE_ADIS_GYRO_ARW 0.031     /* deg/s/sqrt(Hz) */
+#define SIM_NOISE_ADIS_GYRO_BI 0.0068     /* deg/s */
+#define SIM_NOISE_ADIS_GYRO_TC_MIN 0.5    /* s */
+#define SIM_NOISE_ADIS_GYRO_TC_MAX 2000.0 /* s */
+#define SIM_NOISE_ADIS_GYRO_RRW 0.00045   /* deg/s/sqrt(s) */
 /* Accelerometer white noise 0.2 mg/sqrt(Hz) (about 5.7 mg rms at 819.2 SPS). Assumed, not from
  * the seeds: docs/unconfirmed-facts.md. */
-#define SIM_NOISE_ADIS_ACCEL_WHITE 0.0002  /* g/sqrt(Hz) */
+#define SIM_NOISE_ADIS_ACCEL_WHITE 0.0002 /* g/sqrt(Hz) */
 
 /*
  * A part whose terms are well apart on the Allan curve, for checking read-offs (tests/allan):

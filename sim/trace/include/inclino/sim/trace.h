@@ -29,10 +29,10 @@
 extern "C" {
 #endif
 
-#define TRACE_MAX_WORDS SPI_MAX_FRAMES  /* words in one CS period */
+#define TRACE_MAX_WORDS SPI_MAX_FRAMES /* words in one CS period */
 #define TRACE_MAX_IRQS 8u
 #define TRACE_MSG_LEN 200u
-#define TRACE_LINE_MAX 4095u     /* characters in one line of a trace, before its newline */
+#define TRACE_LINE_MAX 4095u /* characters in one line of a trace, before its newline */
 
 struct trace_rec;
 
@@ -44,14 +44,14 @@ struct trace_rec_irq {
 };
 
 struct trace_rec {
-    struct spi_bus bus;              /* give &rec.bus to spi_dev_init */
-    struct hal hal;                  /* give &rec.hal to the driver (records interrupts) */
+    struct spi_bus bus; /* give &rec.bus to spi_dev_init */
+    struct hal hal;     /* give &rec.hal to the driver (records interrupts) */
     const struct spi_bus *inner;
     const struct hal *inner_hal;
     FILE *f;
     bool io_error;
     struct trace_rec_irq irq[TRACE_MAX_IRQS];
-    uint32_t periods, words, irqs;   /* statistics */
+    uint32_t periods, words, irqs; /* statistics */
 };
 
 /*
@@ -67,17 +67,17 @@ int trace_rec_close(struct trace_rec *rec);
 
 /* One record of a trace. */
 enum trace_kind {
-    TRACE_PERIOD = 1,   /* a CS period */
-    TRACE_IRQ = 2,      /* an interrupt callback ran */
+    TRACE_PERIOD = 1, /* a CS period */
+    TRACE_IRQ = 2,    /* an interrupt callback ran */
 };
 
 struct trace_record {
     enum trace_kind kind;
     uint64_t t_ns;
-    unsigned pin;                    /* CS pin (period) or interrupt pin */
-    unsigned bits;                   /* period: 8 or 16 */
-    unsigned n;                      /* period: words */
-    unsigned line;                   /* line in the file */
+    unsigned pin;  /* CS pin (period) or interrupt pin */
+    unsigned bits; /* period: 8 or 16 */
+    unsigned n;    /* period: words */
+    unsigned line; /* line in the file */
     uint16_t mosi[TRACE_MAX_WORDS];
     uint16_t miso[TRACE_MAX_WORDS];
 };
@@ -101,18 +101,18 @@ struct trace_replay_irq {
 };
 
 struct trace_replay {
-    struct spi_bus bus;              /* give &rp.bus to spi_dev_init */
-    struct hal hal;                  /* give &rp.hal to the driver */
+    struct spi_bus bus; /* give &rp.bus to spi_dev_init */
+    struct hal hal;     /* give &rp.hal to the driver */
     FILE *f;
     unsigned line;
-    struct trace_record next;        /* the record the driver must produce next */
+    struct trace_record next; /* the record the driver must produce next */
     bool have_next;
     uint64_t now_ns;
     uint32_t crit_depth;
     uint32_t fired;
-    uint32_t frame;                  /* words consumed so far (the frame index of messages) */
-    uint32_t periods;                /* records consumed */
-    int status;                      /* INC_OK, or the first error (sticky) */
+    uint32_t frame;   /* words consumed so far (the frame index of messages) */
+    uint32_t periods; /* records consumed */
+    int status;       /* INC_OK, or the first error (sticky) */
     char msg[TRACE_MSG_LEN];
     struct trace_replay_irq irq[TRACE_MAX_IRQS];
 };
@@ -146,10 +146,10 @@ extern "C" {
  * INC_ERR_FORMAT with a message (VCD structure, missing wire) / INC_ERR_IO.
  */
 struct trace_vcd_opts {
-    const char *sclk, *mosi, *miso, *cs;  /* wire names in the VCD */
-    unsigned mode;                        /* 0..3 */
-    unsigned bits;                        /* 8 or 16 */
-    unsigned cs_pin;                      /* the cs= number to write (the driver's CS pin) */
+    const char *sclk, *mosi, *miso, *cs; /* wire names in the VCD */
+    unsigned mode;                       /* 0..3 */
+    unsigned bits;                       /* 8 or 16 */
+    unsigned cs_pin;                     /* the cs= number to write (the driver's CS pin) */
 };
 int trace_from_vcd(FILE *vcd, FILE *out, const struct trace_vcd_opts *o, char *msg, size_t msg_len);
 #ifdef __cplusplus

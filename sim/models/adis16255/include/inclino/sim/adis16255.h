@@ -40,10 +40,10 @@
 extern "C" {
 #endif
 
-#define SIM_ADIS16255_REGS 32u           /* 16-bit registers 0x00..0x3E */
-#define SIM_ADIS16255_HIST 64u           /* 2^6 taps, the largest filter */
-#define SIM_ADIS16255_ST_DPS 25.0        /* [U] self-test output shift, °/s */
-#define SIM_ADIS16255_MAN_ST_DPS 25.0    /* [U] manual self-test (MSC_CTRL bits 8/9) shift */
+#define SIM_ADIS16255_REGS 32u        /* 16-bit registers 0x00..0x3E */
+#define SIM_ADIS16255_HIST 64u        /* 2^6 taps, the largest filter */
+#define SIM_ADIS16255_ST_DPS 25.0     /* [U] self-test output shift, °/s */
+#define SIM_ADIS16255_MAN_ST_DPS 25.0 /* [U] manual self-test (MSC_CTRL bits 8/9) shift */
 
 /* Durations of the part; a zero field takes the default in brackets. */
 struct sim_adis16255_times {
@@ -56,14 +56,14 @@ struct sim_adis16255_times {
 };
 
 struct sim_adis16255_cfg {
-    const char *name;            /* for violation reports ("adis16255" when NULL) */
-    struct sim_pinbus *bus;      /* its clock drives the sampling */
+    const char *name;       /* for violation reports ("adis16255" when NULL) */
+    struct sim_pinbus *bus; /* its clock drives the sampling */
     unsigned cs, sclk, mosi, miso;
-    int dio0, dio1;              /* board pins wired to DIO0/DIO1, -1 = not wired */
-    unsigned axis;               /* rate axis sensed: 0 x, 1 y, 2 z */
+    int dio0, dio1; /* board pins wired to DIO0/DIO1, -1 = not wired */
+    unsigned axis;  /* rate axis sensed: 0 x, 1 y, 2 z */
     struct sim_violation_log *log;
-    uint64_t seed;               /* garbage while busy / after broken frames */
-    uint16_t endurance;          /* flash write count at start */
+    uint64_t seed;      /* garbage while busy / after broken frames */
+    uint16_t endurance; /* flash write count at start */
     struct sim_adis16255_times times;
 };
 
@@ -71,31 +71,31 @@ struct sim_adis16255 {
     struct sim_adis_core core;
     struct sim_adis16255_cfg cfg;
     struct sim_clock *clk;
-    int dio_dev;                 /* pin-bus device id driving the DIO pins */
+    int dio_dev;                        /* pin-bus device id driving the DIO pins */
     uint16_t reg[SIM_ADIS16255_REGS];   /* index = address >> 1; outputs hold data bits only */
     uint16_t flash[SIM_ADIS16255_REGS]; /* non-volatile copy */
-    uint32_t nd;                 /* ND per register index */
-    uint16_t latched;            /* STATUS bits that latch until STATUS is read */
-    uint16_t live;               /* STATUS bits that follow a condition (supply) */
-    bool st_error;               /* STATUS self-test error */
+    uint32_t nd;                        /* ND per register index */
+    uint16_t latched;                   /* STATUS bits that latch until STATUS is read */
+    uint16_t live;                      /* STATUS bits that follow a condition (supply) */
+    bool st_error;                      /* STATUS self-test error */
     struct sim_inertial_input input;    /* static input when no physics hook */
     struct sim_physics physics;
     struct sim_error_model error;
     double hist[SIM_ADIS16255_HIST];
     unsigned hist_len, hist_pos;
     double angle_deg;
-    double rate_out_dps;         /* last gyro output before quantisation (after offset) */
-    bool sampling;               /* false while in reset */
+    double rate_out_dps; /* last gyro output before quantisation (after offset) */
+    bool sampling;       /* false while in reset */
     bool connected;
-    bool dr_suppressed;          /* test back door: no data-ready pulses */
-    bool dr_high;                /* level driven on the active DIO (when driven) */
+    bool dr_suppressed; /* test back door: no data-ready pulses */
+    bool dr_high;       /* level driven on the active DIO (when driven) */
     uint64_t busy_until;
     bool reset_pending;
     bool autonull_active;
     unsigned autonull_target, autonull_n;
     double autonull_sum;
     bool self_test_active;
-    bool self_test_fail;         /* test back door: the next self-tests fail */
+    bool self_test_fail; /* test back door: the next self-tests fail */
     int ev_sample, ev_dr_off, ev_cmd, ev_st;
     /* statistics */
     uint32_t samples, commands, dr_pulses, frame_errors;
@@ -107,8 +107,10 @@ int sim_adis16255_init(struct sim_adis16255 *m, const struct sim_adis16255_cfg *
 
 /* Back doors for tests (the physical world and fault injection). */
 void sim_adis16255_set_input(struct sim_adis16255 *m, const struct sim_inertial_input *in);
-void sim_adis16255_set_physics(struct sim_adis16255 *m, const struct sim_physics *p); /* NULL: static */
-void sim_adis16255_set_error_model(struct sim_adis16255 *m, const struct sim_error_model *e); /* NULL: ideal */
+void sim_adis16255_set_physics(struct sim_adis16255 *m,
+                               const struct sim_physics *p); /* NULL: static */
+void sim_adis16255_set_error_model(struct sim_adis16255 *m,
+                                   const struct sim_error_model *e); /* NULL: ideal */
 /* Busy (garbage answers) for ns from now, as if a command ran that the driver did not send. */
 void sim_adis16255_force_busy(struct sim_adis16255 *m, uint64_t ns);
 void sim_adis16255_fail_self_test(struct sim_adis16255 *m, bool fail);

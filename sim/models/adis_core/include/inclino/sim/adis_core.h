@@ -49,14 +49,14 @@ struct sim_adis_cfg {
     const char *name;
     struct sim_pinbus *bus;
     unsigned cs, sclk, mosi, miso;
-    struct sim_spi_timing timing;       /* limits in normal mode */
-    uint8_t addr_mask;                  /* 0x3F (ADIS16255) or 0x7F (ADIS1636x/1640x) */
-    uint16_t burst_cmd;                 /* 0x3E00 on ADIS1636x/1640x; 0 = no burst */
-    uint32_t burst_min_period_ns;       /* 1000 (1 MHz) */
+    struct sim_spi_timing timing; /* limits in normal mode */
+    uint8_t addr_mask;            /* 0x3F (ADIS16255) or 0x7F (ADIS1636x/1640x) */
+    uint16_t burst_cmd;           /* 0x3E00 on ADIS1636x/1640x; 0 = no burst */
+    uint32_t burst_min_period_ns; /* 1000 (1 MHz) */
     const struct sim_adis_ops *ops;
     void *model;
     struct sim_violation_log *log;
-    uint64_t seed;                      /* garbage generator */
+    uint64_t seed; /* garbage generator */
     /* Optional (NULL: none). Called with `model` when a frame is dropped because it broke a
      * timing or framing rule (flags: the frame's SIM_SPI_FLAG bits), not because the part was
      * busy: a part with an "SPI communication failure" status bit sets it here. Also called
@@ -70,9 +70,9 @@ struct sim_adis_core {
     struct sim_spi_slave slave;
     struct sim_adis_cfg cfg;
     struct sim_rng rng;
-    uint16_t next_out;                  /* word for the next frame */
-    bool next_valid;                    /* false: next frame shifts out garbage */
-    uint16_t cmd;                       /* command of the current frame */
+    uint16_t next_out; /* word for the next frame */
+    bool next_valid;   /* false: next frame shifts out garbage */
+    uint16_t cmd;      /* command of the current frame */
     bool bursting;
     uint16_t burst[SIM_ADIS_BURST_MAX];
     unsigned burst_len;

@@ -48,15 +48,15 @@ enum sim_adis_imu_variant {
 };
 
 #define SIM_ADIS_IMU_NO_PIN 0xFFFFu
-#define SIM_ADIS_IMU_REGS 48u          /* 16-bit registers at byte addresses 0x00..0x5F */
-#define SIM_ADIS_IMU_HIST 128u         /* Bartlett history (2 x 64 taps) */
-#define SIM_ADIS_IMU_FILTERED 6u       /* gyro x, y, z, accel x, y, z */
+#define SIM_ADIS_IMU_REGS 48u    /* 16-bit registers at byte addresses 0x00..0x5F */
+#define SIM_ADIS_IMU_HIST 128u   /* Bartlett history (2 x 64 taps) */
+#define SIM_ADIS_IMU_FILTERED 6u /* gyro x, y, z, accel x, y, z */
 
 struct sim_adis_imu_cfg {
     enum sim_adis_imu_variant variant;
     struct sim_pinbus *bus;
-    unsigned cs, sclk, mosi, miso;       /* SPI pins */
-    unsigned dio1, dio2;                 /* pins DIO1/DIO2 drive, or SIM_ADIS_IMU_NO_PIN */
+    unsigned cs, sclk, mosi, miso; /* SPI pins */
+    unsigned dio1, dio2;           /* pins DIO1/DIO2 drive, or SIM_ADIS_IMU_NO_PIN */
     struct sim_violation_log *log;
     const struct sim_physics *physics;   /* NULL: the static input (sim_adis_imu_set_input) */
     const struct sim_error_model *error; /* NULL: an ideal part */
@@ -78,35 +78,35 @@ struct sim_adis_imu {
     struct sim_adis_imu_cfg cfg;
     const char *name;
     struct sim_clock *clk;
-    int dr_dev;                          /* pin-bus device id of the DIO lines */
-    uint16_t reg[SIM_ADIS_IMU_REGS];     /* register file (outputs without ND/EA) */
-    uint16_t flash[SIM_ADIS_IMU_REGS];   /* flash copy of the writable registers */
-    uint64_t nd;                         /* ND per register index (bit i = reg[i]) */
-    uint16_t diag;                       /* DIAG_STAT latch */
+    int dr_dev;                        /* pin-bus device id of the DIO lines */
+    uint16_t reg[SIM_ADIS_IMU_REGS];   /* register file (outputs without ND/EA) */
+    uint16_t flash[SIM_ADIS_IMU_REGS]; /* flash copy of the writable registers */
+    uint64_t nd;                       /* ND per register index (bit i = reg[i]) */
+    uint16_t diag;                     /* DIAG_STAT latch */
     bool low_power;
     /* sampling */
-    struct sim_inertial_input input;     /* static input */
-    double magn_gauss[3];                /* magnetometer input (1640x), not in the error model */
-    double aux_v;                        /* AUX_ADC input */
-    uint64_t next_sample_16;             /* time of the next sample in 1/16 ns */
+    struct sim_inertial_input input; /* static input */
+    double magn_gauss[3];            /* magnetometer input (1640x), not in the error model */
+    double aux_v;                    /* AUX_ADC input */
+    uint64_t next_sample_16;         /* time of the next sample in 1/16 ns */
     int sample_ev;
-    uint64_t period_16;                  /* current sample period in 1/16 ns */
+    uint64_t period_16; /* current sample period in 1/16 ns */
     uint32_t hist_idx;
-    unsigned taps;                       /* N of the Bartlett filter in force */
+    unsigned taps; /* N of the Bartlett filter in force */
     struct sim_adis_imu_filter filt[SIM_ADIS_IMU_FILTERED];
     double filtered[SIM_ADIS_IMU_FILTERED]; /* filter outputs of the last sample (deg/s, g) */
     /* data-ready */
-    unsigned dr_pin;                     /* pin in use, or SIM_ADIS_IMU_NO_PIN */
+    unsigned dr_pin; /* pin in use, or SIM_ADIS_IMU_NO_PIN */
     bool dr_active_high;
     int dr_off_ev;
     /* commands */
     uint64_t busy_until;
     int busy_ev;
-    bool prec_active;                    /* precision autonull is averaging */
+    bool prec_active; /* precision autonull is averaging */
     double prec_sum[3];
     uint32_t prec_n;
     bool self_test_active;
-    uint16_t self_test_fail;             /* DIAG bits the next self-test reports */
+    uint16_t self_test_fail; /* DIAG bits the next self-test reports */
     uint32_t bursts_served;
     /* statistics */
     uint64_t samples;

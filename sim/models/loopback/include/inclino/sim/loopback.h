@@ -22,20 +22,20 @@ struct sim_loopback_cfg {
     const char *name;
     struct sim_pinbus *bus;
     unsigned cs, sclk, mosi, miso;
-    uint8_t mode;                  /* 0..3 or SIM_SPI_MODE_AUTO_0_3 */
-    uint8_t bits;                  /* 8 or 16 */
+    uint8_t mode; /* 0..3 or SIM_SPI_MODE_AUTO_0_3 */
+    uint8_t bits; /* 8 or 16 */
     struct sim_spi_timing timing;
-    uint16_t first;                /* answer before any word was received */
-    uint16_t xor_mask;             /* answers are previous ^ xor_mask */
+    uint16_t first;    /* answer before any word was received */
+    uint16_t xor_mask; /* answers are previous ^ xor_mask */
     struct sim_violation_log *log;
 };
 
 struct sim_loopback {
     struct sim_spi_slave slave;
-    uint16_t next;                 /* the answer being prepared */
+    uint16_t next; /* the answer being prepared */
     uint16_t xor_mask;
-    unsigned received;             /* words received in total */
-    uint16_t rx_log[SIM_LOOPBACK_LOG];   /* the first SIM_LOOPBACK_LOG words received */
+    unsigned received;                 /* words received in total */
+    uint16_t rx_log[SIM_LOOPBACK_LOG]; /* the first SIM_LOOPBACK_LOG words received */
     unsigned frames_ended;
     unsigned last_frame_words;
     unsigned last_frame_flags;

@@ -70,39 +70,39 @@ enum sim_sca3000_variant {
 };
 
 /* Assumed part limits (no readable datasheet table; see docs/unconfirmed-facts.md). */
-#define SIM_SCA3000_TIMING_MIN_PERIOD_NS 2000u   /* SCLK <= 500 kHz */
+#define SIM_SCA3000_TIMING_MIN_PERIOD_NS 2000u /* SCLK <= 500 kHz */
 #define SIM_SCA3000_TIMING_MIN_HALF_NS 1000u
 #define SIM_SCA3000_TIMING_CS_SETUP_NS 1000u
 #define SIM_SCA3000_TIMING_CS_HOLD_NS 1000u
-#define SIM_SCA3000_TIMING_STALL_NS 10000u       /* CS high between two CS periods */
+#define SIM_SCA3000_TIMING_STALL_NS 10000u /* CS high between two CS periods */
 #define SIM_SCA3000_TIMING_MOSI_SETUP_NS 50u
-#define SIM_SCA3000_TIMING_MISO_DELAY_NS 250u    /* MISO valid after the falling SCLK edge */
+#define SIM_SCA3000_TIMING_MISO_DELAY_NS 250u /* MISO valid after the falling SCLK edge */
 
 /* REVID the model answers unless configured otherwise (the real value is unknown, [U]). */
 #define SIM_SCA3000_REVID_DEFAULT 0x52u
 
 /* Factory content of the protected (reserved) bits, a model assumption: non-zero so that a
  * driver that does not read-modify-write is caught. */
-#define SIM_SCA3000_MODE_DEFAULT 0x08u      /* bit3 reserved set, normal mode, ring off */
-#define SIM_SCA3000_INT_MASK_DEFAULT 0x14u  /* bits 4 and 2 (protected 0x1C) set, active low */
-#define SIM_SCA3000_MD_CTRL_DEFAULT 0x40u   /* bit6 (protected 0xC0) set, no axis enabled */
-#define SIM_SCA3000_OUT_CTRL_DEFAULT 0xFCu  /* bits 7..5 set, X/Y/Z in the ring, no divider */
+#define SIM_SCA3000_MODE_DEFAULT 0x08u     /* bit3 reserved set, normal mode, ring off */
+#define SIM_SCA3000_INT_MASK_DEFAULT 0x14u /* bits 4 and 2 (protected 0x1C) set, active low */
+#define SIM_SCA3000_MD_CTRL_DEFAULT 0x40u  /* bit6 (protected 0xC0) set, no axis enabled */
+#define SIM_SCA3000_OUT_CTRL_DEFAULT 0xFCu /* bits 7..5 set, X/Y/Z in the ring, no divider */
 
 #define SIM_SCA3000_RING_SIZE 192u
 #define SIM_SCA3000_NO_PIN 0xFFFFu
 
 /* Fault injection, the "faulty fake device" (OR of bits). */
-#define SIM_SCA3000_FAULT_EEPROM 0x01u    /* STATUS bit1: EEPROM checksum error */
+#define SIM_SCA3000_FAULT_EEPROM 0x01u /* STATUS bit1: EEPROM checksum error */
 
 struct sim_sca3000_cfg {
-    const char *name;                /* for violation reports; default "sca3000" */
+    const char *name; /* for violation reports; default "sca3000" */
     struct sim_pinbus *bus;
     unsigned cs, sclk, mosi, miso;
-    unsigned int_pin;                /* INT output pin, or SIM_SCA3000_NO_PIN */
+    unsigned int_pin; /* INT output pin, or SIM_SCA3000_NO_PIN */
     enum sim_sca3000_variant variant;
-    uint8_t revid;                   /* 0: SIM_SCA3000_REVID_DEFAULT */
-    const struct sim_spi_timing *timing;  /* NULL: the SIM_SCA3000_TIMING_* limits */
-    double range_g;                  /* saturation in g; 0: the 13-bit code range */
+    uint8_t revid;                       /* 0: SIM_SCA3000_REVID_DEFAULT */
+    const struct sim_spi_timing *timing; /* NULL: the SIM_SCA3000_TIMING_* limits */
+    double range_g;                      /* saturation in g; 0: the 13-bit code range */
     struct sim_violation_log *log;
 };
 
@@ -110,7 +110,7 @@ struct sim_sca3000 {
     struct sim_spi_slave slave;
     struct sim_pinbus *bus;
     unsigned int_pin;
-    int int_dev;                     /* pin-bus device id for INT, -1 when none */
+    int int_dev; /* pin-bus device id for INT, -1 when none */
     enum sim_sca3000_variant variant;
     const char *name;
     struct sim_violation_log *log;
@@ -124,34 +124,34 @@ struct sim_sca3000 {
 
     /* register file */
     uint8_t mode, int_mask, int_status, ctrl_sel;
-    uint8_t ind[16];                 /* indirect registers by CTRL_SEL value */
+    uint8_t ind[16]; /* indirect registers by CTRL_SEL value */
     bool frame_error, unlocked, locked_up;
-    unsigned unlock_step;            /* UNLOCK values accepted in sequence: 0..2 */
+    unsigned unlock_step; /* UNLOCK values accepted in sequence: 0..2 */
     bool unlock_step_this_frame;
     uint8_t faults;
-    uint16_t x, y, z, temp;          /* output words as the registers hold them */
-    int32_t count[3];                /* last 13-bit counts (for tests' diagnostics) */
-    bool saturated;                  /* last sample hit the range */
+    uint16_t x, y, z, temp; /* output words as the registers hold them */
+    int32_t count[3];       /* last 13-bit counts (for tests' diagnostics) */
+    bool saturated;         /* last sample hit the range */
 
     /* ring buffer */
     uint16_t ring[SIM_SCA3000_RING_SIZE];
-    unsigned ring_head, ring_count;  /* oldest value, values stored */
+    unsigned ring_head, ring_count; /* oldest value, values stored */
     unsigned ring_div_phase;
     uint32_t ring_overwritten;
 
     /* the CS period in progress */
-    uint16_t lx, ly, lz, ltemp;      /* latched at CS fall */
-    uint8_t lcount;                  /* BUF_COUNT latched at CS fall */
+    uint16_t lx, ly, lz, ltemp; /* latched at CS fall */
+    uint8_t lcount;             /* BUF_COUNT latched at CS fall */
     bool is_write, bad_cmd;
-    uint8_t addr;                    /* address of the byte being shifted out */
+    uint8_t addr; /* address of the byte being shifted out */
     uint8_t wdata;
-    unsigned ring_byte;              /* 0: next ring byte is a sample's MSB, 1: its LSB */
-    unsigned ring_peek;              /* samples consumed in this period */
-    bool have_out;                   /* a read byte is in the shift register */
+    unsigned ring_byte; /* 0: next ring byte is a sample's MSB, 1: its LSB */
+    unsigned ring_peek; /* samples consumed in this period */
+    bool have_out;      /* a read byte is in the shift register */
     uint8_t out_addr;
 
     /* sampling */
-    int sample_handle;               /* pending clock event, 0 none */
+    int sample_handle; /* pending clock event, 0 none */
     uint64_t sample_period_ns;
     uint64_t samples;
 
@@ -159,7 +159,7 @@ struct sim_sca3000 {
 
     /* statistics and diagnostics */
     uint32_t frames, corrupt_frames, writes_applied, protocol_errors;
-    const char *last_protocol;       /* what the last protocol violation was (static string) */
+    const char *last_protocol; /* what the last protocol violation was (static string) */
 };
 
 /*

@@ -23,18 +23,18 @@
 extern "C" {
 #endif
 
-#define SIM_ALLAN_BI_FACTOR 0.664   /* flicker floor = 0.664 B (sqrt(2 ln 2 / pi)) */
+#define SIM_ALLAN_BI_FACTOR 0.664 /* flicker floor = 0.664 B (sqrt(2 ln 2 / pi)) */
 
 struct sim_allan_point {
-    double tau_s;     /* averaging time m * dt, s */
-    double adev;      /* overlapping Allan deviation, unit of y */
-    double err;       /* rough 1-sigma uncertainty: adev / sqrt(2 (n/m - 1)) (white-noise EDF) */
-    uint64_t m;       /* cluster size, samples */
+    double tau_s; /* averaging time m * dt, s */
+    double adev;  /* overlapping Allan deviation, unit of y */
+    double err;   /* rough 1-sigma uncertainty: adev / sqrt(2 (n/m - 1)) (white-noise EDF) */
+    uint64_t m;   /* cluster size, samples */
 };
 
 struct sim_allan_opts {
-    unsigned per_decade;   /* tau points per decade (log grid of m), 1..100; 0 -> 10 */
-    double min_clusters;   /* largest m is n / min_clusters (>= 2); 0 -> 10 */
+    unsigned per_decade; /* tau points per decade (log grid of m), 1..100; 0 -> 10 */
+    double min_clusters; /* largest m is n / min_clusters (>= 2); 0 -> 10 */
 };
 
 /*
@@ -69,7 +69,7 @@ struct sim_allan_readoff {
  * values would read the floor low. Returns 0, INC_ERR_NULL, or INC_ERR_INVAL (count == 0,
  * max_rel_err < 0, or no point qualifies).
  */
-#define SIM_ALLAN_MIN_REL_ERR 0.05   /* n / m >= 201 */
+#define SIM_ALLAN_MIN_REL_ERR 0.05 /* n / m >= 201 */
 int sim_allan_readoff(const struct sim_allan_point *pts, size_t count, double max_rel_err,
                       struct sim_allan_readoff *r);
 
@@ -94,8 +94,8 @@ double sim_allan_interp(const struct sim_allan_point *pts, size_t count, double 
  * increasing: the first row not after its predecessor); no data rows: the last line.
  * INC_ERR_NO_SPACE (out of memory), INC_ERR_IO (read error).
  */
-#define SIM_ALLAN_CSV_LINE_MAX 4095u  /* characters per line, the '\n' not counted */
-#define SIM_ALLAN_CSV_FIELD_MAX 127u  /* characters of a read field */
+#define SIM_ALLAN_CSV_LINE_MAX 4095u /* characters per line, the '\n' not counted */
+#define SIM_ALLAN_CSV_FIELD_MAX 127u /* characters of a read field */
 int sim_allan_read_csv(FILE *f, unsigned col, int time_col, double scale, double **y, size_t *n,
                        double *dt_s, size_t *bad_line);
 

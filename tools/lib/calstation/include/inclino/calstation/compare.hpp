@@ -13,7 +13,8 @@
 #include <string>
 #include <vector>
 
-namespace calstation {
+namespace calstation
+{
 
 // One quantity of one axis: index 0 = raw (no compensation), 1 + k = TemperatureFits kind k,
 // and the last = the best model (Lorentz + cubic) quantised into the record and evaluated by the
@@ -33,13 +34,14 @@ struct CompareAxis {
 };
 
 struct CompareConfig {
-    int cycles = 10;          // calibration run (seed 002: 10)
+    int cycles = 10; // calibration run (seed 002: 10)
     int validation_cycles = 3;
     uint64_t noise_seed = 1;
 };
 
 // Simulate, fit and evaluate one part. Returns "" or an error message.
-std::string compare_part(const SimPart &part, const CompareConfig &cfg, std::vector<CompareAxis> &out);
+std::string compare_part(const SimPart &part, const CompareConfig &cfg,
+                         std::vector<CompareAxis> &out);
 
 // The report: one table per quantity, worst axis per part and model, plus per-axis detail.
 std::string format_compare(const std::vector<CompareAxis> &rows);

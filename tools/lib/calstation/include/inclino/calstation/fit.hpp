@@ -28,7 +28,8 @@
 #include <string>
 #include <vector>
 
-namespace calstation {
+namespace calstation
+{
 
 // Temperature-model choice of the fit. Best = LorentzCubic (see docs/calibration.md for why).
 enum class TChoice { Best, None, Linear, Parabola, Lorentz, Pwl, LorentzCubic };
@@ -43,10 +44,10 @@ struct FitOptions {
 // One block's flip-pair measurement (step 1).
 struct BlockMeas {
     long block = 0;
-    double t = 0.0;                      // mean temperature of its face rows, degC
-    std::array<bool, 3> have{};          // axis has a +-1 g pair in this block
-    std::array<double, 3> bias{};        // g
-    std::array<double, 3> scale{};       // g/g
+    double t = 0.0;                // mean temperature of its face rows, degC
+    std::array<bool, 3> have{};    // axis has a +-1 g pair in this block
+    std::array<double, 3> bias{};  // g
+    std::array<double, 3> scale{}; // g/g
 };
 
 // The residual spreads of one model on one axis (seed 002 definitions).
@@ -68,13 +69,13 @@ struct TemperatureFits {
 
 struct CalResult {
     // Coefficients in physical units, as the record stores them before quantisation.
-    std::array<double, 3> acc_offset{};            // g
-    std::array<double, 3> acc_gain{};              // g/g
+    std::array<double, 3> acc_offset{};                  // g
+    std::array<double, 3> acc_gain{};                    // g/g
     std::array<std::array<double, 3>, 3> acc_misalign{}; // M
     std::array<std::array<double, 4>, 3> acc_nonlin{};   // c0..c3
-    std::array<TModel, 3> acc_tbias{};             // g
-    std::array<TModel, 3> acc_tscale{};            // relative deviation
-    std::array<double, 3> gyro_offset{};           // deg/s
+    std::array<TModel, 3> acc_tbias{};                   // g
+    std::array<TModel, 3> acc_tscale{};                  // relative deviation
+    std::array<double, 3> gyro_offset{};                 // deg/s
     std::array<double, 3> gyro_scale{1.0, 1.0, 1.0};
     bool have_gyro = false;
     bool have_nonlin = false;
@@ -82,9 +83,9 @@ struct CalResult {
 
     // For the reports.
     std::vector<BlockMeas> blocks;
-    std::vector<std::vector<size_t>> soaks;        // indices into blocks, by temperature
+    std::vector<std::vector<size_t>> soaks; // indices into blocks, by temperature
     TemperatureFits tfits;
-    std::string report;                            // human-readable residual report
+    std::string report; // human-readable residual report
 };
 
 // Steps 1 and 2 helpers, public for the comparison and the tests.
@@ -93,8 +94,9 @@ std::vector<std::vector<size_t>> soak_points(const std::vector<BlockMeas> &b);
 Spread spread(const std::vector<BlockMeas> &b, const std::vector<std::vector<size_t>> &soaks,
               int axis, const TModel *bias_model, const TModel *scale_model);
 // The same with any evaluators of B(T) (g) and K(T) (g/g); an empty function means "none".
-Spread spread_fn(const std::vector<BlockMeas> &b, const std::vector<std::vector<size_t>> &soaks, int axis,
-                 const std::function<double(double)> &bias_model, const std::function<double(double)> &scale_model);
+Spread spread_fn(const std::vector<BlockMeas> &b, const std::vector<std::vector<size_t>> &soaks,
+                 int axis, const std::function<double(double)> &bias_model,
+                 const std::function<double(double)> &scale_model);
 // Fit every kind on the blocks (t_ref only matters for the three-point ambient point).
 TemperatureFits fit_temperature(const std::vector<BlockMeas> &b,
                                 const std::vector<std::vector<size_t>> &soaks, double t_ref);

@@ -13,7 +13,8 @@
 #include <string>
 #include <vector>
 
-namespace calstation {
+namespace calstation
+{
 
 // Quantise every coefficient (round to nearest: Q16.16 for g, deg/s, degC; Q30 for gains,
 // ratios and the scale-factor deviation) and bind the record to the station's part. Fails with a
@@ -29,8 +30,8 @@ std::string encode_record(const struct calrec &r, uint32_t seq, std::vector<uint
 
 struct FwCheck {
     size_t rows = 0;
-    double max_lsb = 0.0;       // max |firmware - double model of the quantised record|, Q16 LSB
-    double max_err_mg = 0.0;    // max |firmware - true specific force| over the rows, mg
+    double max_lsb = 0.0;         // max |firmware - double model of the quantised record|, Q16 LSB
+    double max_err_mg = 0.0;      // max |firmware - true specific force| over the rows, mg
     double max_tilt_err_mg = 0.0; // the same over the rows within +-30 deg (|u| <= 0.5 g on x, y)
 };
 

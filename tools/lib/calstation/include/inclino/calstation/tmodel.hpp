@@ -25,7 +25,8 @@
 #include <string>
 #include <vector>
 
-namespace calstation {
+namespace calstation
+{
 
 enum class TKind { None = 0, Linear = 1, Parabola = 2, Lorentz = 3, Pwl = 4, LorentzCubic = 5 };
 
@@ -60,7 +61,7 @@ struct TFit {
     bool ok = false;
     std::string message;
     TModel model;
-    int iterations = 0;  // LM iterations (Lorentz kinds)
+    int iterations = 0; // LM iterations (Lorentz kinds)
     bool converged = true;
 };
 

@@ -18,21 +18,21 @@
 extern "C" {
 #endif
 
-#define IMU_CSV_MAX_LINE 1024        /* characters per line, the newline not counted */
+#define IMU_CSV_MAX_LINE 1024 /* characters per line, the newline not counted */
 #define IMU_CSV_MAX_FIELDS 16
 /* Largest time, s: the tool converts time to uint64 ns (limit 1.8e10 s); 1e10 s keeps a margin
  * and still takes Unix-epoch time stamps. */
 #define IMU_CSV_TIME_MAX_S 1.0e10
 
 struct imu_csv_row {
-    double v[8];                     /* time s, gyro x y z deg/s, accel x y z g, [temp degC] */
-    long line;                       /* 1-based line in the file */
+    double v[8]; /* time s, gyro x y z deg/s, accel x y z g, [temp degC] */
+    long line;   /* 1-based line in the file */
 };
 
 struct imu_csv_table {
-    struct imu_csv_row *rows;        /* malloc'd; imu_csv_free() */
+    struct imu_csv_row *rows; /* malloc'd; imu_csv_free() */
     size_t n, cap;
-    int cols;                        /* 7 or 8 */
+    int cols; /* 7 or 8 */
 };
 
 /*
