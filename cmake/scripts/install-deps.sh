@@ -1,7 +1,7 @@
 #!/bin/sh
 # install-deps.sh - install everything Inclino's README commands need on Debian 12 (bookworm).
 #
-# Host build and tools: cmake make gcc g++ libeigen3-dev python3 (scripts, size reports)
+# Host build and tools: cmake make gcc g++ libeigen3-dev zlib1g-dev python3 (scripts, size reports)
 # Cross builds:         gcc-arm-none-eabi libnewlib-arm-none-eabi gcc-riscv64-unknown-elf
 # Tests under QEMU:     qemu-system-arm (Cortex-M) qemu-system-misc (riscv32)
 # Checks and tools:     cppcheck clang-format valgrind (instruction counts) sigrok-cli (decoding VCDs)
@@ -12,7 +12,7 @@ set -eu
 
 packages="cmake make gcc g++ python3 libeigen3-dev \
     gcc-arm-none-eabi libnewlib-arm-none-eabi gcc-riscv64-unknown-elf \
-    qemu-system-arm qemu-system-misc \
+    qemu-system-arm qemu-system-misc zlib1g-dev \
     cppcheck clang-format valgrind sigrok-cli"
 
 if [ "$(id -u)" -eq 0 ]; then
