@@ -1,0 +1,118 @@
+/*
+ * app_esc.h - the driving (ESC) run mode of the application and the parked/driving mode manager
+ * (module inclino_app, prefix app_esc_). docs/attitude.md, "The ESC run mode".
+ *
+ * Per data-ready sample, after app_step has read and calibrated it (inclino/app.h: the record's
+ * correction with its temperature models, the stillness detector, the EPB block):
+ *   1. the gyro gets the processor-side correction of the last gyro calibration (gyrocal's
+ *      1/320 deg/s path, inclino/gyrocal.h: gyrocal_correct_q16), when one is set;
+ *   2. the attitude estimator (inclino/att.h) takes the sample, with the vehicle's speed and yaw
+ *      rate when the vehicle network gives them (aiding), and the per-axis saturation flags;
+ *   3. the mode: DRIVING while |speed| > drive_speed_mps (or, without a speed input, while the
+ *      stillness detector is not at rest); PARKED once the detector has been at rest and the
+ *      speed below drive_speed_mps for park_s. Entering DRIVING drops the EPB block in progress
+ *      (app_restart): a block that saw the car move is never an estimate;
+ *   4. the output: in DRIVING, the attitude (quaternion, roll, pitch, bound, validity) every
+ *      out_div samples; in PARKED, the EPB slope estimate of each completed block (unchanged:
+ *      the EPB path is app_step's). Every output says which mode it came from.
+ * While parked long enough (autonull_after_s at rest since the last calibration), the mode
+ * manager asks for a gyro autonull (app_esc_autonull_due): the board runs the part's autonull
+ * and the processor-side correction (gyrocal_run) and hands the result over with
+ * app_esc_set_gyro_correction; the estimator's own bias estimate keeps working meanwhile.
+ *
+ * Units: Q16.16 (inclino/fx.h). Freestanding C11, integer only, no heap; caller-allocated.
+ */
+#ifndef INCLINO_APP_ESC_H
+#define INCLINO_APP_ESC_H
+
+#include <stdbool.h>
+#include <stdint.h>
+
+#include "inclino/app.h"
+#include "inclino/att.h"
+#include "inclino/error.h"
+#include "inclino/fx.h"
+#include "inclino/gyrocal.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+enum app_mode {
+    APP_MODE_PARKED = 0,  /* the EPB path: slope from block averages */
+    APP_MODE_DRIVING = 1, /* the ESC path: attitude per sample */
+};
+
+/* What the vehicle network says (wheel speed, the ESC's yaw rate), per sample. */
+struct app_vehicle {
+    bool valid;            /* false: no vehicle input (the mode uses stillness alone) */
+    fx_q16_t speed_mps;    /* longitudinal speed along sensor x, m/s, |.| <= 200 */
+    fx_q16_t yaw_rate_dps; /* about sensor z, deg/s */
+};
+
+struct app_esc_cfg {
+    struct att_config att;
+    uint32_t out_div;          /* an attitude output every out_div samples, 1..65535 */
+    fx_q16_t drive_speed_mps;  /* above: driving. (0, 10] m/s */
+    fx_q16_t park_s;           /* at rest and slow this long: parked. [0, 60] s */
+    fx_q16_t autonull_after_s; /* parked this long since the last gyro calibration: autonull
+                                  due. [1, 3600] s */
+};
+
+/* The output of one sample (app_esc_step sets *have_out when there is one). */
+struct app_esc_output {
+    uint8_t mode; /* enum app_mode it came from */
+    bool valid;   /* DRIVING: att_get_valid; PARKED: the EPB result's validity */
+    int32_t q[4]; /* DRIVING: sensor to earth, Q30 w x y z */
+    fx_q16_t roll_deg, pitch_deg;
+    fx_q16_t bound_deg;    /* DRIVING: 99.9 % inclination-error bound; PARKED: slope bound */
+    uint8_t att_fault;     /* ATT_FAULT_* */
+    struct app_result epb; /* PARKED: the slope estimate (valid only then) */
+};
+
+struct app_esc {
+    struct app_esc_cfg cfg;
+    struct att att;
+    struct gyrocal_correction gcorr;
+    uint32_t park_n, autonull_n; /* thresholds in samples */
+    uint32_t n_out;              /* samples since the last attitude output */
+    uint32_t still_n;            /* samples at rest and slow */
+    uint32_t since_cal_n;        /* samples parked since the last gyro calibration */
+    uint8_t mode;
+    bool ready;
+};
+
+/* Defaults for a part at rate_mhz (milli-samples/s): att_config_default at that rate, an output
+ * every 8 samples (about 100 Hz at 819.2 SPS), driving above 0.5 m/s, parked after 2 s at rest,
+ * autonull due after 60 s parked. INC_ERR_NULL, INC_ERR_INVAL (rate outside 100..4000 SPS). */
+int app_esc_cfg_default(struct app_esc_cfg *cfg, uint32_t rate_mhz);
+
+/* Validate cfg (att_init's checks included) and start PARKED with no gyro correction.
+ * INC_ERR_NULL, INC_ERR_INVAL; on error every step is refused (INC_ERR_STATE). */
+int app_esc_init(struct app_esc *e, const struct app_esc_cfg *cfg);
+
+/*
+ * One sample: app_step(a, s, read_err, ...) and then steps 1-4 above. veh may be NULL (no
+ * vehicle input). *have_out is true when *out holds an output. A failed read (read_err != 0) is
+ * counted by app_step and feeds nothing to the estimator. INC_ERR_NULL, INC_ERR_STATE, or
+ * app_step's error; att_update's INC_ERR_RANGE (an input beyond full scale) is not an error here:
+ * the estimator marks itself invalid and says so in att_fault.
+ */
+int app_esc_step(struct app_esc *e, struct app *a, const struct app_sample *s, int read_err,
+                 const struct app_vehicle *veh, struct app_esc_output *out, bool *have_out);
+
+/* The mode now (enum app_mode); APP_MODE_PARKED for NULL. */
+uint8_t app_esc_mode(const struct app_esc *e);
+
+/* True when a gyro autonull should run now (parked long enough since the last one). */
+bool app_esc_autonull_due(const struct app_esc *e);
+
+/* Take the processor-side correction of a gyro calibration (gyrocal_correction_get) and restart
+ * the autonull interval. A correction with valid == false removes it. INC_ERR_NULL. */
+int app_esc_set_gyro_correction(struct app_esc *e, const struct gyrocal_correction *c);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* INCLINO_APP_ESC_H */

@@ -1,0 +1,207 @@
+/*
+ * test_app_esc.c - the ESC run mode and the parked/driving mode manager (inclino/app_esc.h) on
+ * scripted samples: parked outputs are the EPB slope estimates, driving outputs the attitude
+ * every out_div samples with its bound, the switch by speed and by stillness, the EPB block
+ * dropped when the car moves, the autonull request and the processor-side gyro correction, bad
+ * calls. Host and QEMU (integer only apart from the scripted sine waves).
+ */
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "inclino/app_esc.h"
+#include "unit.h"
+
+#define RATE_MHZ 819200u
+#define DEG (3.14159265358979323846 / 180.0)
+
+static int script_read(void *ctx, struct app_sample *out)
+{
+    (void)ctx;
+    (void)out;
+    return INC_ERR_UNSUPPORTED;
+}
+
+static int script_identity(void *ctx, struct calrec_binding *out)
+{
+    (void)ctx;
+    memset(out, 0, sizeof(*out));
+    out->family = CALREC_FAMILY_ADIS163XX;
+    out->product = 16405u;
+    return INC_OK;
+}
+
+static const struct app_sensor_ops script_ops = {script_read, script_identity};
+static struct app app;
+static struct app_esc esc;
+static uint32_t rng = 99u;
+
+static double noise(double sd)
+{
+    double s = 0;
+    int i;
+    for (i = 0; i < 4; i++)
+        s += (unit_rand32(&rng) >> 8) / 16777216.0;
+    return (s - 2.0) * 1.7320508 * sd;
+}
+
+/* A sample of a part at roll r, pitch p (deg), with a gyro rate and a bias on every axis. */
+static void sample(struct app_sample *s, double r, double p, const double w[3], double bias)
+{
+    unsigned i;
+    memset(s, 0, sizeof(*s));
+    s->accel_g[0] = (int32_t)lround((-sin(p * DEG) + noise(0.002)) * 65536.0);
+    s->accel_g[1] = (int32_t)lround((sin(r * DEG) * cos(p * DEG) + noise(0.002)) * 65536.0);
+    s->accel_g[2] = (int32_t)lround((cos(r * DEG) * cos(p * DEG) + noise(0.002)) * 65536.0);
+    for (i = 0; i < 3u; i++)
+        s->gyro_dps[i] = (int32_t)lround((w[i] + bias + noise(0.1)) * 65536.0);
+    s->flags = APP_S_HAVE_GYRO;
+}
+
+static void setup(struct app_esc_cfg *ec)
+{
+    struct app_cfg cfg;
+    const struct app_sensor sensor = {&script_ops, NULL};
+    REQUIRE(app_cfg_default(&cfg, RATE_MHZ) == INC_OK);
+    REQUIRE(app_init(&app, &cfg, &sensor, NULL) == INC_OK);
+    REQUIRE(app_esc_cfg_default(ec, RATE_MHZ) == INC_OK);
+    ec->autonull_after_s = FX_Q16_INT(5);
+    REQUIRE(app_esc_init(&esc, ec) == INC_OK);
+}
+
+/* Parked, then driving (speed), then parked again (speed 0 and at rest). */
+static void test_modes(void)
+{
+    static const double zero[3] = {0, 0, 0};
+    struct app_esc_cfg ec;
+    struct app_vehicle veh = {true, 0, 0};
+    struct app_sample s;
+    struct app_esc_output o;
+    unsigned i, parked_out = 0u, driving_out = 0u, gap_max = 0u, since = 0u;
+    double worst = 0.0;
+    bool have;
+    setup(&ec);
+    CHECK_EQ_INT(app_esc_mode(&esc), APP_MODE_PARKED);
+    /* 8 s parked on a 4 deg roll: EPB blocks (2.5 s) come out, tagged PARKED. */
+    for (i = 0; i < 8u * 819u; i++) {
+        sample(&s, 4.0, 0.0, zero, 0.0);
+        REQUIRE(app_esc_step(&esc, &app, &s, INC_OK, &veh, &o, &have) == INC_OK);
+        if (have) {
+            CHECK_EQ_INT(o.mode, APP_MODE_PARKED);
+            parked_out++;
+        }
+    }
+    CHECK(parked_out >= 2u);
+    CHECK(app_esc_autonull_due(&esc)); /* 5 s parked since the start */
+    /* Driving at 15 m/s while rolling 4 +- 10 deg at 0.2 Hz: attitude every 8 samples. */
+    veh.speed_mps = FX_Q16_INT(15);
+    for (i = 0; i < 20u * 819u; i++) {
+        const double t = i / 819.2, roll = 4.0 + 10.0 * sin(2 * 3.14159265358979 * 0.2 * t);
+        const double w[3] = {
+            10.0 * 2 * 3.14159265358979 * 0.2 * cos(2 * 3.14159265358979 * 0.2 * t), 0, 0};
+        sample(&s, roll, 0.0, w, 0.0);
+        REQUIRE(app_esc_step(&esc, &app, &s, INC_OK, &veh, &o, &have) == INC_OK);
+        since++;
+        if (have) {
+            const double err = fabs(o.roll_deg / 65536.0 - roll);
+            CHECK_EQ_INT(o.mode, APP_MODE_DRIVING);
+            CHECK(o.bound_deg > 0);
+            if (since > gap_max) gap_max = since;
+            since = 0u;
+            driving_out++;
+            if (o.valid && err > o.bound_deg / 65536.0) {
+                worst = err;
+                printf("t %.3f s: roll %.3f, estimate %.3f, bound %.3f deg\n", t, roll,
+                       o.roll_deg / 65536.0, o.bound_deg / 65536.0);
+            }
+        }
+    }
+    CHECK_EQ_INT(app_esc_mode(&esc), APP_MODE_DRIVING);
+    CHECK(!app_esc_autonull_due(&esc));
+    CHECK_NEAR(driving_out, 20u * 819u / 8u, 2);
+    CHECK_EQ_INT(gap_max, 8);
+    CHECK(worst == 0.0); /* no valid output outside its bound */
+    /* Stop: speed 0 and at rest on a 2 deg pitch: PARKED after the detector's windows + 2 s. */
+    veh.speed_mps = 0;
+    parked_out = 0u;
+    for (i = 0; i < 8u * 819u; i++) {
+        sample(&s, 0.0, 2.0, zero, 0.0);
+        REQUIRE(app_esc_step(&esc, &app, &s, INC_OK, &veh, &o, &have) == INC_OK);
+        if (have && o.mode == APP_MODE_PARKED) parked_out++;
+    }
+    CHECK_EQ_INT(app_esc_mode(&esc), APP_MODE_PARKED);
+    CHECK(parked_out >= 1u);
+}
+
+/* Without a speed input the stillness detector alone switches to DRIVING. */
+static void test_no_speed(void)
+{
+    struct app_esc_cfg ec;
+    struct app_sample s;
+    struct app_esc_output o;
+    unsigned i;
+    bool have;
+    setup(&ec);
+    for (i = 0; i < 3u * 819u; i++) {
+        const double w[3] = {0, 0, 30.0 * sin(i / 40.0)};
+        sample(&s, 0.0, 0.0, w, 0.0);
+        REQUIRE(app_esc_step(&esc, &app, &s, INC_OK, NULL, &o, &have) == INC_OK);
+    }
+    CHECK_EQ_INT(app_esc_mode(&esc), APP_MODE_DRIVING);
+}
+
+/* The processor-side correction (1/320 deg/s) removes a known gyro bias before the estimator:
+ * with the bias corrected the estimator's own bias estimate stays near 0. */
+static void test_gyro_correction(void)
+{
+    static const double zero[3] = {0, 0, 0};
+    struct app_esc_cfg ec;
+    struct gyrocal_correction gc = {{-320, -320, -320}, true};
+    struct app_sample s;
+    struct app_esc_output o;
+    fx_q16_t bias[3], sig;
+    unsigned i;
+    bool have;
+    setup(&ec);
+    REQUIRE(app_esc_set_gyro_correction(&esc, &gc) == INC_OK);
+    CHECK(!app_esc_autonull_due(&esc));
+    for (i = 0; i < 10u * 819u; i++) {
+        sample(&s, 0.0, 0.0, zero, 1.0); /* 1 deg/s bias on every axis */
+        REQUIRE(app_esc_step(&esc, &app, &s, INC_OK, NULL, &o, &have) == INC_OK);
+    }
+    att_get_bias(&esc.att, bias, &sig);
+    CHECK_NEAR(bias[0] / 65536.0, 0.0, 0.05);
+    CHECK_NEAR(bias[1] / 65536.0, 0.0, 0.05);
+    CHECK_EQ_INT(app_esc_set_gyro_correction(NULL, &gc), INC_ERR_NULL);
+}
+
+static void test_bad_calls(void)
+{
+    struct app_esc_cfg ec;
+    struct app_esc e2;
+    struct app_esc_output o;
+    struct app_sample s;
+    bool have;
+    CHECK_EQ_INT(app_esc_cfg_default(NULL, RATE_MHZ), INC_ERR_NULL);
+    CHECK_EQ_INT(app_esc_cfg_default(&ec, 50000u), INC_ERR_INVAL);
+    REQUIRE(app_esc_cfg_default(&ec, RATE_MHZ) == INC_OK);
+    ec.out_div = 0u;
+    CHECK_EQ_INT(app_esc_init(&e2, &ec), INC_ERR_INVAL);
+    CHECK_EQ_INT(app_esc_step(&e2, &app, &s, INC_OK, NULL, &o, &have), INC_ERR_STATE);
+    REQUIRE(app_esc_cfg_default(&ec, RATE_MHZ) == INC_OK);
+    ec.att.tau_acc_s = 0;
+    CHECK_EQ_INT(app_esc_init(&e2, &ec), INC_ERR_INVAL);
+    CHECK_EQ_INT(app_esc_init(NULL, &ec), INC_ERR_NULL);
+    CHECK_EQ_INT(app_esc_mode(NULL), APP_MODE_PARKED);
+    CHECK(!app_esc_autonull_due(NULL));
+}
+
+int main(void)
+{
+    UNIT_RUN(test_modes);
+    UNIT_RUN(test_no_speed);
+    UNIT_RUN(test_gyro_correction);
+    UNIT_RUN(test_bad_calls);
+    return unit_report();
+}
