@@ -210,6 +210,10 @@ include(inclino_layers)
 # Cross-target helpers (board support, images, size report) live in their own file.
 include(inclino_cross)
 
+# Test data kept outside the repository (BROAD trials): INCLINO_BROAD_DIR and
+# inclino_require_broad(); see docs/data.md.
+include(inclino_data)
+
 function(inclino_finalize)
   inclino_check_layers()
   if(NOT INCLINO_IS_HOST)

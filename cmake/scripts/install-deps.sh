@@ -5,6 +5,8 @@
 # Cross builds:         gcc-arm-none-eabi libnewlib-arm-none-eabi gcc-riscv64-unknown-elf
 # Tests under QEMU:     qemu-system-arm (Cortex-M) qemu-system-misc (riscv32)
 # Checks and tools:     cppcheck clang-format valgrind (instruction counts) sigrok-cli (decoding VCDs)
+# BROAD test data:      python3-numpy python3-scipy (tools/broad/broad2csv.py), curl ca-certificates
+#                       (tools/broad/fetch-broad.sh downloads over HTTPS; docs/data.md)
 #
 # --no-install-recommends keeps QEMU from pulling in its GUI and firmware packages.
 # Uses sudo only when not already root.
@@ -13,7 +15,8 @@ set -eu
 packages="cmake make gcc g++ python3 libeigen3-dev \
     gcc-arm-none-eabi libnewlib-arm-none-eabi gcc-riscv64-unknown-elf \
     qemu-system-arm qemu-system-misc zlib1g-dev \
-    cppcheck clang-format valgrind sigrok-cli"
+    cppcheck clang-format valgrind sigrok-cli \
+    python3-numpy python3-scipy curl ca-certificates"
 
 if [ "$(id -u)" -eq 0 ]; then
     sudo=""
