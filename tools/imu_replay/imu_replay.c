@@ -719,6 +719,12 @@ static int est_init(struct est *e, const struct opts *o, double nominal, char *m
             c.gyro_fs_dps = q16_of(o->gyro_fs);
             c.acc_fs_g = q16_of(o->acc_fs);
         } else if (o->part->adis) {
+            /* The ADIS1636x/1640x output noise (about 0.9 deg/s and 9 mg rms per sample at
+             * 819.2 SPS, docs/drivers-adis-imu.md) and a running engine's vibration keep the
+             * default rest thresholds (tuned on a quieter IMU) from ever seeing rest: they scale
+             * with the part's noise. */
+            c.rest_gyro_dps = FX_Q16_INT(5);
+            c.rest_acc_g = FX_Q16_ONE / 10;
             c.gyro_fs_dps = q16_of(409.55); /* 14-bit counts of 0.05 deg/s */
             /* the 14-bit output reaches 27 g; att takes at most 16 g (beyond: saturated) */
             c.acc_fs_g = q16_of(fmin(8191.0 * o->part->acc_lsb_ug * 1e-6, 16.0));
