@@ -55,6 +55,16 @@ static void test_metric(void)
     quat_axis(1, 1, 0, 180.0, a);
     CHECK_NEAR(attscore_incl_err_deg(a, b), 180.0, 1e-6);
     CHECK(isnan(attscore_incl_err_deg(z, b)));
+    {
+        double r, p;
+        quat_axis(0, 1, 0, -20.0, a);
+        attscore_roll_pitch_deg(a, &r, &p);
+        CHECK_NEAR(r, 0.0, 1e-9);
+        CHECK_NEAR(p, -20.0, 1e-9);
+        quat_axis(1, 0, 0, 170.0, a);
+        attscore_roll_pitch_deg(a, &r, &p);
+        CHECK_NEAR(r, 170.0, 1e-9);
+    }
 }
 
 static void test_score(void)
@@ -84,6 +94,10 @@ static void test_score(void)
     CHECK_NEAR(r.max_err_over_bound, 5.0 / 3.5, 1e-9);
     CHECK_NEAR(r.max_valid_err_deg, 5.0, 1e-9);
     CHECK_NEAR(r.median_bound_deg, 3.5, 1e-12);
+    /* errors are about x alone: all in roll */
+    CHECK_NEAR(r.roll_rms_deg, r.rms_deg, 1e-9);
+    CHECK_NEAR(r.roll_max_deg, 6.0, 1e-9);
+    CHECK_NEAR(r.pitch_max_deg, 0.0, 1e-9);
     CHECK(attscore_score(NULL, 1u, 0.0, &r) != 0);
     /* A valid sample without a bound is over it. */
     s[3].bound_deg = NAN;

@@ -8,7 +8,8 @@
  * EST: one row per TRUTH row with t_s, q_w, q_x, q_y, q_z, att_bound_deg, att_valid (imu_replay's
  * output). Either may be "-" (standard input) and either may be gzip'd. Prints one line:
  *   name=.. n=.. rms_deg=.. max_deg=.. valid_frac=.. over_bound_frac=.. max_err_over_bound=..
- *   max_valid_err_deg=.. median_bound_deg=.. result=pass|fail
+ *   max_valid_err_deg=.. median_bound_deg=.. roll_rms_deg=.. roll_max_deg=.. pitch_rms_deg=..
+ *   pitch_max_deg=.. result=pass|fail
  * Every --require is checked against those keys; the first that fails is named on stderr.
  * Exit 0 (every requirement met), 1 (one failed), 2 (bad arguments or input).
  */
@@ -35,7 +36,8 @@ static void usage(FILE *f)
     fprintf(f, "usage: att_score TRUTH.csv[.gz] EST.csv[.gz] [--name NAME] [--t-min S]\n"
                "                 [--require KEY<=V|KEY>=V]...\n"
                "keys: n rms_deg max_deg valid_frac over_bound_frac max_err_over_bound\n"
-               "      max_valid_err_deg median_bound_deg\n");
+               "      max_valid_err_deg median_bound_deg roll_rms_deg roll_max_deg pitch_rms_deg\n"
+               "      pitch_max_deg\n");
 }
 
 static int parse_double(const char *s, double *out)
@@ -81,6 +83,10 @@ static double key_value(const struct attscore_result *r, const char *key, int *f
     if (strcmp(key, "max_err_over_bound") == 0) return r->max_err_over_bound;
     if (strcmp(key, "max_valid_err_deg") == 0) return r->max_valid_err_deg;
     if (strcmp(key, "median_bound_deg") == 0) return r->median_bound_deg;
+    if (strcmp(key, "roll_rms_deg") == 0) return r->roll_rms_deg;
+    if (strcmp(key, "roll_max_deg") == 0) return r->roll_max_deg;
+    if (strcmp(key, "pitch_rms_deg") == 0) return r->pitch_rms_deg;
+    if (strcmp(key, "pitch_max_deg") == 0) return r->pitch_max_deg;
     *found = 0;
     return 0.0;
 }
@@ -214,10 +220,11 @@ int main(int argc, char **argv)
         }
     }
     printf("name=%s n=%zu rms_deg=%.4f max_deg=%.4f valid_frac=%.5f over_bound_frac=%.6f "
-           "max_err_over_bound=%.4f max_valid_err_deg=%.4f median_bound_deg=%.4f result=%s\n",
+           "max_err_over_bound=%.4f max_valid_err_deg=%.4f median_bound_deg=%.4f "
+           "roll_rms_deg=%.4f roll_max_deg=%.4f pitch_rms_deg=%.4f pitch_max_deg=%.4f result=%s\n",
            name != NULL ? name : "-", r.n, r.rms_deg, r.max_deg, r.valid_frac, r.over_bound_frac,
-           r.max_err_over_bound, r.max_valid_err_deg, r.median_bound_deg,
-           fail == 0 ? "pass" : "fail");
+           r.max_err_over_bound, r.max_valid_err_deg, r.median_bound_deg, r.roll_rms_deg,
+           r.roll_max_deg, r.pitch_rms_deg, r.pitch_max_deg, fail == 0 ? "pass" : "fail");
     if (fflush(stdout) != 0 || ferror(stdout)) {
         fprintf(stderr, "att_score: write error on standard output\n");
         return 2;

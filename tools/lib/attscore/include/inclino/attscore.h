@@ -43,7 +43,13 @@ struct attscore_result {
     double max_err_over_bound; /* largest error / bound among valid scored samples */
     double max_valid_err_deg;  /* largest error among valid scored samples */
     double median_bound_deg;   /* median bound over the scored samples */
+    /* Roll and pitch errors (ZYX Euler angles of both quaternions, roll wrapped to +-180 deg)
+     * over the scored samples: meaningful for a vehicle, whose pitch stays far from +-90 deg. */
+    double roll_rms_deg, roll_max_deg, pitch_rms_deg, pitch_max_deg;
 };
+
+/* Roll (about x) and pitch (about y) of q (w, x, y, z) in the ZYX Euler convention, deg. */
+void attscore_roll_pitch_deg(const double q[4], double *roll_deg, double *pitch_deg);
 
 /* Score n samples; t_min_s: samples before it are not scored. Returns 0, or -1 for bad arguments
  * (NULL) or when memory runs out. A non-finite error counts as 180 deg. */
