@@ -182,11 +182,11 @@ static void p_rough(struct bld *b)
     stop(b, 10.0, 2.5, 5.0);
 }
 
-/* Speed bumps: short bumps at 20 and 10 km/h, a road hump at 25 km/h. */
+/* Speed bumps: short bumps at 15 and 10 km/h, a road hump at 25 km/h. */
 static void p_bumps(struct bld *b)
 {
-    go(b, 20.0 * KMH, 1.5, 3.0);
-    event(b, 2.0, VEH_EV_BUMP, 0.07, 0.6);
+    go(b, 15.0 * KMH, 1.5, 3.0);
+    event(b, 2.0, VEH_EV_BUMP, 0.06, 0.6);
     emit(b, 5.0);
     speed(b, 10.0 * KMH, 1.5, 3.0);
     emit(b, 4.0);
@@ -373,7 +373,7 @@ static const struct preset PRESETS[] = {
     {"lane_change", "two double lane changes (3.5 m over 40 m) at 80 km/h", 45.0, b_lane},
     {"banked_slope", "left curve R 200 m at 80 km/h, 6 deg bank, 5 % upgrade", 120.0, b_banked},
     {"rough_road", "rough road at 50 and 36 km/h with five potholes", 200.0, b_rough},
-    {"speed_bumps", "speed bumps at 20 and 10 km/h, a road hump at 25 km/h", 270.0, b_bumps},
+    {"speed_bumps", "speed bumps at 15 and 10 km/h, a road hump at 25 km/h", 270.0, b_bumps},
     {"parking", "parking: full lock forward, full lock reversing, straighten", 10.0, b_parking},
     {"idle_slope", "engine start and 60 s idle at standstill on a 10 % grade, 2 deg bank", 60.0,
      b_idle},
