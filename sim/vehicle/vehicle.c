@@ -285,8 +285,9 @@ static void road_frame(const struct veh_sim *s, double qr[4], double wr[3], doub
     double ang[3] = {s->psi, -s->grade, s->bank};
     double rate[3] = {s->r, -s->grade_dot, s->bank_dot};
     double cb = cos(s->beta), sb = sin(s->beta);
-    double vr[3] = {s->v * cb, s->v * sb, 0.0};
-    double vd[3] = {s->a * cb - s->v * sb * s->beta_dot, s->a * sb + s->v * cb * s->beta_dot, 0.0};
+    const double vr[3] = {s->v * cb, s->v * sb, 0.0};
+    const double vd[3] = {s->a * cb - s->v * sb * s->beta_dot, s->a * sb + s->v * cb * s->beta_dot,
+                          0.0};
     double up[3] = {0.0, 0.0, VEH_G};
     chain(axes, ang, rate, 3, qr, wr);
     ar[0] = vd[0] + wr[1] * vr[2] - wr[2] * vr[1];

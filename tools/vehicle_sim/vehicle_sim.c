@@ -158,12 +158,12 @@ int main(int argc, char **argv)
     unsigned long long n = 0;
     double max_lat = 0.0, max_lon = 0.0, max_roll = 0.0, max_pitch = 0.0, last_t = 0.0;
     int rc = parse(argc, argv, &a), werr = 0;
-    size_t i;
     if (rc != 0) {
         usage();
         return rc > 0 ? 0 : 1;
     }
     if (strcmp(a.scenario, "list") == 0) {
+        size_t i;
         for (i = 0; i < veh_preset_count(); i++) {
             if (veh_preset_build(i, &sc) != INC_OK) return 1;
             printf("%-13s %7.1f s  %s\n", veh_preset_name(i), veh_scenario_duration(&sc),
