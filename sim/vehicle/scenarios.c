@@ -220,6 +220,21 @@ static void p_parking(struct bld *b)
     stop(b, 1.0, 1.0, 2.0);
 }
 
+/* A stop on a hill: up onto an 8 % grade at 30 km/h, stop, idle, pull away uphill, level. */
+static void p_hill_stop(struct bld *b, double idle_s)
+{
+    double v = 30.0 * KMH;
+    go(b, v, 2.0, 4.0);
+    road(b, 8.0, 0.0, 4.0);
+    emit(b, 6.0);
+    stop(b, v, 2.5, 5.0);
+    rest(b, idle_s);
+    go(b, v, 2.0, 4.0);
+    road(b, 0.0, 0.0, 4.0);
+    emit(b, 6.0);
+    stop(b, v, 2.5, 5.0);
+}
+
 /* Engine start and idle at standstill on a slope (10 % grade, 2 deg bank). */
 static void p_idle_slope(struct bld *b, double idle_s, bool mark_event)
 {
@@ -342,11 +357,8 @@ static void b_drive(struct bld *b)
         p_braking(b);
         rest(b, 6.0);
         p_parking(b);
-        /* a stop on a hill with the engine idling */
-        road(b, 8.0, 0.0, 3.0);
         rest(b, 4.0);
-        rest(b, 25.0);
-        road(b, 0.0, 0.0, 3.0);
+        p_hill_stop(b, 25.0);
         rest(b, 4.0);
         p_cornering(b, 0.3, 40.0, 20.0);
         rest(b, 6.0);
