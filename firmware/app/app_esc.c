@@ -138,7 +138,10 @@ int app_esc_step(struct app_esc *e, struct app *a, const struct app_sample *s, i
         att_get_quat(&e->att, out->q);
         att_get_euler(&e->att, &out->roll_deg, &out->pitch_deg);
         out->bound_deg = att_get_bound(&e->att);
-        out->valid = att_get_valid(&e->att);
+        /* A car sustains accelerations (cornering, braking, a long climb) for longer than the
+         * estimator's accelerometer filter, and without the speed they can even look like rest
+         * to it: only an aided attitude is ever valid while driving (docs/attitude.md). */
+        out->valid = att_get_valid(&e->att) && veh != NULL && veh->valid;
         out->att_fault = att_get_status(&e->att);
         out->epb.valid = false;
         *have_out = true;

@@ -21,14 +21,17 @@
 
 static void usage(void)
 {
-    fprintf(stderr,
-            "usage: vehicle_sim --scenario NAME|list [--rate HZ] [--seed N] [--out FILE.csv]\n"
-            "                   [--duration S] [--mount-deg R,P,Y] [--ideal]\n"
-            "  --rate HZ         output rate, 10..10000 (default 819.2; the low rate is 285.714)\n"
-            "  --seed N          integer 0..18446744073709551615 (default 1)\n"
-            "  --duration S      stop after S seconds (0 < S <= the scenario's length)\n"
-            "  --mount-deg R,P,Y mounting misalignment roll, pitch, yaw in deg, each |x| <= 10\n"
-            "  --ideal           no sensor errors: every output is the truth\n");
+    fprintf(
+        stderr,
+        "usage: vehicle_sim --scenario NAME|list [--rate HZ] [--seed N] [--out FILE.csv]\n"
+        "                   [--duration S] [--mount-deg R,P,Y] [--accel-bias-mg X] [--ideal]\n"
+        "  --rate HZ         output rate, 10..10000 (default 819.2; the low rate is 285.714)\n"
+        "  --seed N          integer 0..18446744073709551615 (default 1)\n"
+        "  --duration S      stop after S seconds (0 < S <= the scenario's length)\n"
+        "  --mount-deg R,P,Y mounting misalignment roll, pitch, yaw in deg, each |x| <= 10\n"
+        "  --accel-bias-mg X accelerometer turn-on bias, 1 sigma per axis, mg, 0..100 (default\n"
+        "                    5: a factory-calibrated part; about 1 after end-of-line calibration)\n"
+        "  --ideal           no sensor errors: every output is the truth\n");
 }
 
 /* A whole-field finite decimal number (no leading blanks, nothing after it). */
@@ -81,7 +84,7 @@ static int parse_triple(const char *s, double v[3])
 
 struct args {
     const char *scenario, *out;
-    double rate, duration, mount[3];
+    double rate, duration, mount[3], accel_bias_mg;
     unsigned long long seed;
     int ideal;
 };
@@ -98,6 +101,7 @@ static int parse(int argc, char **argv, struct args *a)
     memset(a, 0, sizeof(*a));
     a->rate = VEH_RATE_ADIS;
     a->seed = 1;
+    a->accel_bias_mg = -1.0;
     for (i = 1; i < argc; i++) {
         const char *o = argv[i], *v;
         if (strcmp(o, "--ideal") == 0) {
@@ -107,7 +111,7 @@ static int parse(int argc, char **argv, struct args *a)
         if (strcmp(o, "--help") == 0 || strcmp(o, "-h") == 0) return 1;
         if (strcmp(o, "--scenario") != 0 && strcmp(o, "--rate") != 0 && strcmp(o, "--seed") != 0 &&
             strcmp(o, "--out") != 0 && strcmp(o, "--duration") != 0 &&
-            strcmp(o, "--mount-deg") != 0) {
+            strcmp(o, "--mount-deg") != 0 && strcmp(o, "--accel-bias-mg") != 0) {
             fprintf(stderr, "vehicle_sim: unknown option '%s'\n", o);
             return -1;
         }
@@ -126,6 +130,10 @@ static int parse(int argc, char **argv, struct args *a)
             if (!(a->rate >= 10.0 && a->rate <= 10000.0)) return bad(o, v, "outside 10..10000 Hz");
         } else if (strcmp(o, "--seed") == 0) {
             if (parse_u64(v, &a->seed) != 0) return bad(o, v, "not an unsigned 64-bit integer");
+        } else if (strcmp(o, "--accel-bias-mg") == 0) {
+            if (parse_double(v, &a->accel_bias_mg) != 0) return bad(o, v, "not a number");
+            if (!(a->accel_bias_mg >= 0.0 && a->accel_bias_mg <= 100.0))
+                return bad(o, v, "outside 0..100 mg");
         } else if (strcmp(o, "--duration") == 0) {
             if (parse_double(v, &a->duration) != 0) return bad(o, v, "not a number");
             if (!(a->duration > 0.0)) return bad(o, v, "must be > 0");
@@ -184,6 +192,7 @@ int main(int argc, char **argv)
     cfg.rate_hz = a.rate;
     cfg.seed = a.seed;
     cfg.sensor_errors = !a.ideal;
+    if (a.accel_bias_mg >= 0.0) cfg.accel_bias_sd_g = a.accel_bias_mg * 1e-3;
     memcpy(cfg.mount_deg, a.mount, sizeof(cfg.mount_deg));
     if (veh_sim_init(&sim, &sc, &cfg) != INC_OK) {
         fprintf(stderr, "vehicle_sim: bad configuration\n");

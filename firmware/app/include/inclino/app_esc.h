@@ -13,7 +13,9 @@
  *      speed below drive_speed_mps for park_s. Entering DRIVING drops the EPB block in progress
  *      (app_restart): a block that saw the car move is never an estimate;
  *   4. the output: in DRIVING, the attitude (quaternion, roll, pitch, bound, validity) every
- *      out_div samples; in PARKED, the EPB slope estimate of each completed block (unchanged:
+ *      out_div samples, valid only when the vehicle input (speed, yaw rate) was there: a car
+ *      sustains accelerations longer than the estimator's filter, which without the speed it
+ *      can neither remove nor bound; in PARKED, the EPB slope estimate of each completed block (unchanged:
  *      the EPB path is app_step's). Every output says which mode it came from.
  * While parked long enough (autonull_after_s at rest since the last calibration), the mode
  * manager asks for a gyro autonull (app_esc_autonull_due): the board runs the part's autonull
