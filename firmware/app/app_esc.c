@@ -20,6 +20,7 @@ int app_esc_cfg_default(struct app_esc_cfg *cfg, uint32_t rate_mhz)
     /* rate in Q16 Hz: rate_mhz * 65536 / 1000, rounded */
     err = att_config_default(&cfg->att, (fx_q16_t)(((uint64_t)rate_mhz * 65536u + 500u) / 1000u));
     if (err != INC_OK) return err;
+    cfg->att.require_aiding = 1u; /* a car: valid only with the speed (att.h) */
     cfg->out_div = 8u;
     cfg->drive_speed_mps = FX_Q16_HALF;
     cfg->park_s = FX_Q16_INT(2);
@@ -138,10 +139,7 @@ int app_esc_step(struct app_esc *e, struct app *a, const struct app_sample *s, i
         att_get_quat(&e->att, out->q);
         att_get_euler(&e->att, &out->roll_deg, &out->pitch_deg);
         out->bound_deg = att_get_bound(&e->att);
-        /* A car sustains accelerations (cornering, braking, a long climb) for longer than the
-         * estimator's accelerometer filter, and without the speed they can even look like rest
-         * to it: only an aided attitude is ever valid while driving (docs/attitude.md). */
-        out->valid = att_get_valid(&e->att) && veh != NULL && veh->valid;
+        out->valid = att_get_valid(&e->att); /* with require_aiding: never without the speed */
         out->att_fault = att_get_status(&e->att);
         out->epb.valid = false;
         *have_out = true;

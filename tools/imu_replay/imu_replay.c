@@ -706,7 +706,8 @@ struct est {
     struct tilt tilt;
 };
 
-static int est_init(struct est *e, const struct opts *o, double nominal, char *msg, size_t len)
+static int est_init(struct est *e, const struct opts *o, double nominal, bool vehicle, char *msg,
+                    size_t len)
 {
     const uint32_t dt_ns = (uint32_t)fmin(fmax(nominal * 1e9 + 0.5, 1.0), 100e6);
     int err;
@@ -732,6 +733,9 @@ static int est_init(struct est *e, const struct opts *o, double nominal, char *m
             c.acc_fs_g = q16_of(4095.0 * o->part->acc_lsb_ug * 1e-6);
             c.gyro_fs_dps = FX_Q16_INT(100);
         }
+        /* vehicle data (speed and yaw-rate columns, even when --no-aiding ignores them): the
+         * car's rule, valid only with aiding (att.h require_aiding) */
+        if (vehicle) c.require_aiding = 1u;
         for (i = 0; i < o->n_att; i++) {
             int32_t *f = (int32_t *)((char *)&c + o->att[i].p->off);
             *f = (int32_t)lround(o->att[i].v * (o->att[i].p->q30 ? 1073741824.0 : 65536.0));
@@ -978,7 +982,7 @@ int main(int argc, char **argv)
         rows_free(&t);
         return 2;
     }
-    if (est_init(&est, &o, nominal, msg, sizeof msg) != INC_OK) {
+    if (est_init(&est, &o, nominal, t.have_vehicle, msg, sizeof msg) != INC_OK) {
         fprintf(stderr, "imu_replay: %s\n", msg);
         rows_free(&t);
         return 2;

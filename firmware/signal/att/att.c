@@ -343,6 +343,7 @@ int att_config_default(struct att_config *cfg, fx_q16_t sample_rate_hz)
     cfg->bound_arw_dps_rts = Q16_FRAC(1, 100);
     cfg->bound_sat_dps = Q16(200);
     cfg->bound_limit_deg = Q16(5);
+    cfg->require_aiding = 0u;
     cfg->fault_hold_s = Q16(1);
     return INC_OK;
 }
@@ -425,7 +426,8 @@ int att_init(struct att *a, const struct att_config *c)
         !in_range(c->bound_lin_tau_s, Q16_FRAC(1, 10), Q16(100)) ||
         !in_range(c->bound_latency_s, 0, Q16_FRAC(1, 10)) ||
         !in_range(c->bound_arw_dps_rts, 0, Q16(1)) || !in_range(c->bound_sat_dps, 0, Q16(4000)) ||
-        !in_range(c->bound_limit_deg, 1, Q16(90)) || !in_range(c->fault_hold_s, 0, Q16(60))) {
+        !in_range(c->bound_limit_deg, 1, Q16(90)) || !in_range(c->fault_hold_s, 0, Q16(60)) ||
+        c->require_aiding > 1u) {
         return INC_ERR_INVAL;
     }
     /* tau_acc * rate >= 64 keeps the filter rate state u within +-0.5 g per step */
@@ -513,6 +515,7 @@ int att_init(struct att *a, const struct att_config *c)
         a->floor_q16 = c->bound_floor_deg + fx_mul_q16(n15, st);
     }
     a->limit_q16 = c->bound_limit_deg;
+    a->need_aid = c->require_aiding != 0u;
     a->bmax16 = c->bias_max_dps;
     a->bmax24 = c->bias_max_dps * 256;
     a->gyro_lim = c->gyro_fs_dps - c->gyro_fs_dps / 256;
@@ -893,7 +896,8 @@ int att_update(struct att *a, const struct att_sample *smp)
         if (a->fault_n == 0u) a->fault &= (uint8_t)~ATT_FAULT_INPUT;
     }
     a->tick = (uint8_t)((a->tick + 1u) & 3u);
-    if (init_done && a->fault == 0u && a->bound <= a->limit_q16) {
+    if (init_done && a->fault == 0u && a->bound <= a->limit_q16 &&
+        (!a->need_aid || smp->veh_valid)) {
         a->flags |= 4u;
     } else {
         a->flags &= (uint8_t)~4u;

@@ -113,6 +113,11 @@ struct att_config {
     fx_q16_t bound_limit_deg;   /* Q16 deg, valid only if bound <= this, (0, 90]; default 5 */
     fx_q16_t fault_hold_s;      /* Q16 s, att_valid stays false this long after a fault, [0, 60];
                                   * default 1 */
+    uint32_t require_aiding;    /* 1: a vehicle, which sustains accelerations (cornering,
+                                  * braking) longer than tau_acc; without the speed they can
+                                  * even look like rest, and the bound cannot hold them: valid
+                                  * only on samples with vehicle aiding (veh_valid). 0 or 1;
+                                  * default 0 (a free-moving platform) */
 };
 
 /* One input sample. */
@@ -188,6 +193,7 @@ struct att {
     uint8_t tick;  /* sample counter mod 4 (decimated tasks) */
     bool mb_ok;    /* every sample of the current window allows a motion-bias update */
     bool mb_pend;  /* cr holds a correction for the second half of the update */
+    bool need_aid; /* require_aiding */
     int32_t cr[3]; /* Q30 rad: the window's correction, gyro frame (then gain-weighted) */
     int32_t gw;    /* Q24 deg/s per rad: the window's weighted gain */
 };
