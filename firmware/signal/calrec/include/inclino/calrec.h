@@ -128,7 +128,7 @@ struct calrec_binding {
 enum calrec_tmodel_kind {
     CALREC_TM_NONE = 0,     /* y(T) = 0 */
     CALREC_TM_LINEAR = 1,   /* y = p0 + p1*u,            u = (Th - t_ref) / t_span */
-    CALREC_TM_PARABOLA = 2, /* y = p0 + p1*u + p2*u^2    (seed 000 three-point: c, b, a) */
+    CALREC_TM_PARABOLA = 2, /* y = p0 + p1*u + p2*u^2    (three-point, in u: not a, b, c) */
     CALREC_TM_LORENTZ = 3,  /* y = p0 + p1 / (1 + ((T - p3) / (p2 / 2))^2)  (seed 002) */
     CALREC_TM_PWL = 4,      /* n knots at T_i = t_ref + i*t_span, y_i = p[i]; held at the ends */
     CALREC_TM_LORENTZ_CUBIC = 5, /* y = LORENTZ(Th) + p4*u + p5*u^2 + p6*u^3 (since version 2) */
