@@ -4,7 +4,7 @@
 //       Tilt steps of 5 and 1 deg (pitch) at 819.2 SPS with engine-idle vibration, passenger
 //       bumps and sensor noise (the vibration model below, docs/kalman.md); each accelerometer
 //       axis goes through a moving average of N (inclino_avg), the fixed scalar Kalman filter
-//       (inclino_kf, n = 1) and the adaptive filter of seed 004 (inclino_kf_adapt); pitch is
+//       (inclino_kf, n = 1) and the adaptive filter of [CN110567483] (inclino_kf_adapt); pitch is
 //       atan2(-a_x, sqrt(a_y^2 + a_z^2)) of the filtered axes (tilt_accel_angles). Prints the rms
 //       error after settling and the 10-90 % rise time of the ensemble mean, per filter.
 //   kf_bench tune [--runs R] [--n N]

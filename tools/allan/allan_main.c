@@ -28,7 +28,7 @@
 #include "inclino/sim/noise.h"
 
 #define MAX_POINTS 1024u
-#define ADIS_GYRO_LSB 0.05 /* deg/s per LSB, +-300 deg/s range (sensors.md 3.3) */
+#define ADIS_GYRO_LSB 0.05 /* deg/s per LSB, +-300 deg/s range (docs/sensor-facts.md §3.3) */
 #define ADIS_GYRO_BITS 14u
 
 struct args {

@@ -4,7 +4,7 @@
 //  1. End of line: the station turns the part through its six faces (25 degC, then optionally a
 //     hot and a cold soak) and, at 25 degC, through a tilt sweep of each axis within +-30 deg;
 //     the firmware averages each position and computes offset, gain and gyro offset on the
-//     device; the station adds the cross-axis matrix, the nonlinearity cubics and seed 000's
+//     device; the station adds the cross-axis matrix, the nonlinearity cubics and [ADI-EPB]'s
 //     three-point temperature models; the firmware stores the record in the simulated flash
 //     (calstore).
 //  2. The part goes into a car parked on a slope, engine idling.
@@ -38,7 +38,7 @@ namespace
 
 constexpr double kQ16 = 65536.0, kQ30 = 1073741824.0;
 constexpr double kPi = 3.14159265358979323846;
-// The tilt sweep: every 7.5 deg from -30 to +30 deg (seed 000's road slopes) on each axis.
+// The tilt sweep: every 7.5 deg from -30 to +30 deg ([ADI-EPB]'s road slopes) on each axis.
 constexpr int kSweepSteps = 4;
 constexpr double kSweepStepDeg = 7.5;
 
@@ -76,13 +76,13 @@ void usage()
         "  --temp C            temperature of the parked car, degC (default 25)\n"
         "  --part NAME         adis16405 (default), adis16400, adis16364, adis16362, sca3000-d01,\n"
         "                      sca3000-e02\n"
-        "  --part-seed N       errors of a part drawn from seed N (default 0: part A, seed 000/002)\n"
+        "  --part-seed N       errors of a part drawn from seed N (default 0: part A, [ADI-EPB]/[TEMP-LORENTZ])\n"
         "  --seed N            noise and vibration seed (default 1)\n"
         "  --length S          parked scenario length, s (default 7.5: three 2.5 s estimates)\n"
         "  --block-s S         samples averaged per estimate, s (default 2.5; whole stillness windows)\n"
         "  --face-s S          end of line: seconds averaged per face (default 1)\n"
         "  --no-tcal           end of line at 25 degC only (no three-point temperature step)\n"
-        "  --no-sweep          no tilt sweep: the nonlinearity stays uncorrected (seed 000's way)\n"
+        "  --no-sweep          no tilt sweep: the nonlinearity stays uncorrected ([ADI-EPB]'s way)\n"
         "  --tcal-temps C,H    cold and hot soak temperatures (default -20,60)\n"
         "  --no-eol            skip the end of line: the flash stays empty (not calibrated)\n"
         "  --no-engine         engine off;  --no-bumps  no random bumps\n"
@@ -284,7 +284,8 @@ int main(int argc, char **argv)
     std::printf(
         "Inclino EPB demo: %s (pin-level model, %.1f SPS, accel LSB %.3f mg), errors of %s, seed %llu\n",
         pi->name, pi->rate_sps, pi->acc_lsb_g * 1e3,
-        o.part_seed == 0 ? "part A (seed 000/002)" : "a seeded part", (unsigned long long)o.seed);
+        o.part_seed == 0 ? "part A ([ADI-EPB]/[TEMP-LORENTZ])" : "a seeded part",
+        (unsigned long long)o.seed);
     if (o.part_seed != 0) std::printf("  part seed %llu\n", (unsigned long long)o.part_seed);
 
     // ---- 1. End of line ------------------------------------------------------------------
@@ -389,7 +390,7 @@ int main(int argc, char **argv)
         }
         if (st.tcal)
             std::printf(
-                ";\n           seed 000 three-point models of offset and gain (%.2f/%.2f/%.2f degC as read)",
+                ";\n           [ADI-EPB] three-point models of offset and gain (%.2f/%.2f/%.2f degC as read)",
                 st.t_cold, st.t_amb, st.t_hot);
         std::printf("\n");
         calstore_info info;
@@ -570,19 +571,19 @@ int main(int argc, char **argv)
     const app_result &r = results.back();
     const slope_budget &b = r.budget;
     std::printf(
-        "\nError budget of the last estimate (seed 000 Table 1, worst case per axis; e_a on the slope axis):\n");
+        "\nError budget of the last estimate ([ADI-EPB] Table 1, worst case per axis; e_a on the slope axis):\n");
     const double sens_g = std::fabs(q16(r.accel_g[cfg.slope.slope_axis])) * b.sensitivity / kQ30;
     std::printf("  %-13s %8.3f mg  (%.4f %% of |A| = %.4f g)  %s\n", "sensitivity", sens_g * 1e3,
                 b.sensitivity / kQ30 * 100.0, std::fabs(q16(r.accel_g[cfg.slope.slope_axis])),
                 app_calibrated(epb_rig_app(rig)) ? bud.terms[0].origin.c_str()
-                                                 : "uncalibrated: seed 000 before calibration");
+                                                 : "uncalibrated: [ADI-EPB] before calibration");
     std::printf("  %-13s %8.3f mg  %s\n", "offset", q16(b.offset_g) * 1e3,
                 app_calibrated(epb_rig_app(rig)) ? bud.terms[1].origin.c_str()
-                                                 : "uncalibrated: seed 000 before calibration");
+                                                 : "uncalibrated: [ADI-EPB] before calibration");
     std::printf("  %-13s %8.3f mg  %s\n", "nonlinearity", q16(b.nonlinearity_g) * 1e3,
                 bud.terms[2].origin.c_str());
     std::printf("  %-13s %8.3f mg  %s\n", "temperature", q16(b.temperature_g) * 1e3,
-                (r.flags & APP_F_TEMP_UNCOMP) ? "not compensated here: seed 000's 50 mg"
+                (r.flags & APP_F_TEMP_UNCOMP) ? "not compensated here: [ADI-EPB]'s 50 mg"
                                               : bud.terms[3].origin.c_str());
     std::printf(
         "  %-13s %8.3f mg  k %.2f x sigma %.3f mg / sqrt(%u); sigma = max(rated %.3f, measured %.3f) mg\n",
