@@ -62,8 +62,8 @@ struct sim_adis_imu_cfg {
     const struct sim_error_model *error; /* NULL: an ideal part */
     uint64_t seed;                       /* garbage words of the core */
     bool power_on_busy;                  /* busy for the start-up time after init (real part) */
-    bool burst_bug;   /* ADIS16405 burst bug of docs/sensor-facts.md §3.6 (default off) */
-    const char *name; /* for violation reports; NULL: the part's name */
+    bool burst_bug;                      /* ADIS16405 burst bug, docs/sensor-facts.md §3.6; off */
+    const char *name;                    /* for violation reports; NULL: the part's name */
 };
 
 /* One Bartlett channel: raw history x, first-stage history y1, running sums. */
