@@ -527,7 +527,7 @@ int cmd_cost(const char *which, long count)
 
 } // namespace
 
-int run(int argc, char **argv)
+int run_command(int argc, char **argv)
 {
     if (argc >= 2) tool_summary_add("command", "%s", argv[1]);
     if (argc >= 2 && std::strcmp(argv[1], "step") == 0) return cmd_step(argc, argv);
@@ -546,6 +546,6 @@ int run(int argc, char **argv)
 int main(int argc, char **argv)
 {
     tool_summary_begin("kf_bench");
-    const int st = run(argc, argv);
+    const int st = run_command(argc, argv);
     return tool_summary_end(st == 0 ? "ok" : "error", st);
 }

@@ -14,15 +14,17 @@ static char summary_keys[SUMMARY_MAX_KEYS][SUMMARY_KEY_LEN];
 static char summary_values[SUMMARY_MAX_KEYS][SUMMARY_VALUE_LEN];
 static int summary_n;
 
+/* src copied into dst[size] (size >= 2), white space and '=' replaced by '_', "" by "-". */
 static void copy_clean(char *dst, size_t size, const char *src)
 {
-    size_t i;
-    for (i = 0; i + 1 < size && src[i] != '\0'; i++) {
+    size_t i, n = strlen(src);
+    if (n > size - 1u) n = size - 1u;
+    for (i = 0; i < n; i++) {
         const char c = src[i];
         dst[i] = (c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '=') ? '_' : c;
     }
-    dst[i] = '\0';
-    if (i == 0 && size > 1) {
+    dst[n] = '\0';
+    if (n == 0u) {
         dst[0] = '-';
         dst[1] = '\0';
     }
