@@ -4,7 +4,7 @@
  *
  * With -icount shift=S,align=off QEMU's virtual time advances 2^S ns per executed instruction
  * and the mps2 SysTick (25 MHz processor clock) counts instructions x 2^S / 40
- * (toolchain-notes.md). Each case pushes BENCH_N prepared samples through one filter; the same
+ * (docs/benchmarks.md, "Cortex-M"). Each case pushes BENCH_N prepared samples through one filter; the same
  * loop around an empty noinline function of the same signature is subtracted, so the figure is
  * the push function's own instructions per sample (callee side). Instructions, not cycles.
  */

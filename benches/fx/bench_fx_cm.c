@@ -3,10 +3,11 @@
  *
  * QEMU does not model the DWT cycle counter, but with -icount shift=S,align=off its virtual
  * time advances 2^S ns per executed instruction, and the mps2-an385/an386 SysTick, clocked by the
- * 25 MHz processor clock, then counts instructions * 2^S / 40 (toolchain-notes.md). Each function
+ * 25 MHz processor clock, then counts instructions * 2^S / 40 (docs/benchmarks.md, "Cortex-M"). Each function
  * runs BENCH_CM_N times over prepared inputs; the same loop around an empty noinline function of
- * the same shape is subtracted, so the figure is the function's own instructions per call
- * (callee-side, without the caller's loop, argument set-up and call). Instructions, not cycles.
+ * the same signature is subtracted, both called from the same loop code (loop2/loop1 below), so
+ * the figure is the function's own instructions per call less the empty function's two (callee
+ * side, without the caller's loop, argument set-up and call). Instructions, not cycles.
  * Run with benches/fx/bench_fx_cm.sh <cross build dir>.
  */
 #include <stdio.h>
@@ -43,6 +44,12 @@ __attribute__((noinline)) static int32_t empty1(int32_t a)
     return a;
 }
 
+__attribute__((noinline)) static uint32_t empty1u(uint32_t a)
+{
+    __asm__ volatile("" ::: "memory");
+    return a;
+}
+
 static void ticks_reset(void)
 {
     SYST_CSR = 0;
@@ -56,38 +63,77 @@ static uint32_t ticks_now(void)
     return SYST_CVR;
 }
 
-#define MEASURE2(name, fn, A, B)                                                   \
-    do {                                                                           \
-        uint32_t t0, t1, t2, t3;                                                   \
-        int i_;                                                                    \
-        ticks_reset();                                                             \
-        t0 = ticks_now();                                                          \
-        for (i_ = 0; i_ < BENCH_CM_N; i_++)                                        \
-            sink += fn((A)[i_], (B)[i_]);                                          \
-        t1 = ticks_now();                                                          \
-        t2 = ticks_now();                                                          \
-        for (i_ = 0; i_ < BENCH_CM_N; i_++)                                        \
-            sink += empty2((A)[i_], (B)[i_]);                                      \
-        t3 = ticks_now();                                                          \
-        printf("BENCH %s %lu %lu\n", name, (unsigned long)((t0 - t1) & 0xFFFFFFu), \
-               (unsigned long)((t2 - t3) & 0xFFFFFFu));                            \
+/*
+ * One timed loop per signature. The function under test and its baseline run through the SAME
+ * loop code (one function, called through a pointer), so the instructions around the call -
+ * loads, the accumulate, the loop counter, the call itself - are identical in both runs and
+ * cancel exactly. (Two copies of the loop, one per callee, let gcc allocate registers
+ * differently: on the M0+ the baseline loop re-made its bound inside the loop, two
+ * instructions more than the measured one, and every figure read 2 low.) noipa keeps gcc from
+ * cloning the loop for a known callee, which would bring the two copies back.
+ */
+typedef int32_t (*bench_fn2)(int32_t, int32_t);
+typedef int32_t (*bench_fn1)(int32_t);
+typedef uint32_t (*bench_fn1u)(uint32_t);
+
+__attribute__((noipa)) static uint32_t loop2(bench_fn2 fn, const int32_t *a, const int32_t *b)
+{
+    uint32_t t0, t1;
+    int i;
+    t0 = ticks_now();
+    for (i = 0; i < BENCH_CM_N; i++)
+        sink += fn(a[i], b[i]);
+    t1 = ticks_now();
+    return (t0 - t1) & 0xFFFFFFu; /* SysTick counts down */
+}
+
+__attribute__((noipa)) static uint32_t loop1(bench_fn1 fn, const int32_t *a)
+{
+    uint32_t t0, t1;
+    int i;
+    t0 = ticks_now();
+    for (i = 0; i < BENCH_CM_N; i++)
+        sink += fn(a[i]);
+    t1 = ticks_now();
+    return (t0 - t1) & 0xFFFFFFu;
+}
+
+__attribute__((noipa)) static uint32_t loop1u(bench_fn1u fn, const uint32_t *a)
+{
+    uint32_t t0, t1;
+    int i;
+    t0 = ticks_now();
+    for (i = 0; i < BENCH_CM_N; i++)
+        sink += (int32_t)fn(a[i]);
+    t1 = ticks_now();
+    return (t0 - t1) & 0xFFFFFFu;
+}
+
+#define MEASURE2(name, fn, A, B)                                                  \
+    do {                                                                          \
+        uint32_t m_, b_;                                                          \
+        ticks_reset();                                                            \
+        m_ = loop2(fn, A, B);                                                     \
+        b_ = loop2(empty2, A, B);                                                 \
+        printf("BENCH %s %lu %lu\n", name, (unsigned long)m_, (unsigned long)b_); \
     } while (0)
 
-#define MEASURE1(name, fn, A)                                                      \
-    do {                                                                           \
-        uint32_t t0, t1, t2, t3;                                                   \
-        int i_;                                                                    \
-        ticks_reset();                                                             \
-        t0 = ticks_now();                                                          \
-        for (i_ = 0; i_ < BENCH_CM_N; i_++)                                        \
-            sink += (int32_t)fn((A)[i_]);                                          \
-        t1 = ticks_now();                                                          \
-        t2 = ticks_now();                                                          \
-        for (i_ = 0; i_ < BENCH_CM_N; i_++)                                        \
-            sink += empty1((int32_t)(A)[i_]);                                      \
-        t3 = ticks_now();                                                          \
-        printf("BENCH %s %lu %lu\n", name, (unsigned long)((t0 - t1) & 0xFFFFFFu), \
-               (unsigned long)((t2 - t3) & 0xFFFFFFu));                            \
+#define MEASURE1(name, fn, A)                                                     \
+    do {                                                                          \
+        uint32_t m_, b_;                                                          \
+        ticks_reset();                                                            \
+        m_ = loop1(fn, A);                                                        \
+        b_ = loop1(empty1, A);                                                    \
+        printf("BENCH %s %lu %lu\n", name, (unsigned long)m_, (unsigned long)b_); \
+    } while (0)
+
+#define MEASURE1U(name, fn, A)                                                    \
+    do {                                                                          \
+        uint32_t m_, b_;                                                          \
+        ticks_reset();                                                            \
+        m_ = loop1u(fn, A);                                                       \
+        b_ = loop1u(empty1u, A);                                                  \
+        printf("BENCH %s %lu %lu\n", name, (unsigned long)m_, (unsigned long)b_); \
     } while (0)
 
 static int32_t div_q16(int32_t a, int32_t b)
@@ -117,7 +163,7 @@ int main(void)
     MEASURE2("fx_mul_q16", fx_mul_q16, in_a, in_b);
     MEASURE2("fx_mul_q30", fx_mul_q30, in_a, in_b);
     MEASURE2("fx_div", div_q16, in_a, in_b); /* fx_div(a, b, 16, &q) plus a 4-argument wrapper */
-    MEASURE1("fx_isqrt32", fx_isqrt32, in_u32);
+    MEASURE1U("fx_isqrt32", fx_isqrt32, in_u32);
     MEASURE1("fx_sqrt_q16", fx_sqrt_q16, in_pos);
     MEASURE1("fx_sqrt_q30", fx_sqrt_q30, in_rpos);
     MEASURE2("fx_atan2_deg", fx_atan2_deg, in_acc, in_acc2);

@@ -12,7 +12,7 @@
  * model's correlated bias + offset register [+ processor-side correction], white noise excluded)
  * is averaged over the mode's averaging time tau right after it: 0.155 s (2 x 64 - 1 taps at
  * 819.2 SPS), 30 s, 100 s. Over runs x 3 axes: mean |r|, rms, 95th percentile of |r|, against the
- * part's Allan deviation at tau (analytic, from the configured model) and seed 003's figures.
+ * part's Allan deviation at tau (analytic, from the configured model) and [ADI-IMU-QS]'s figures.
  * It also reports the bias over the first second after each mode, and the estimation error: the
  * new correction against the true bias averaged over the very span the mode averaged
  * (gyrocal_result.t_avg_*), i.e. what the procedure got wrong, leaving out how the bias moves
@@ -34,7 +34,7 @@
 
 static const char *const mode_name[MODES] = {"autonull", "precision autonull", "manual, register",
                                              "manual, register + 1/320 correction"};
-static const double seed003[MODES] = {0.08, 0.008, 0.006, 0.006};
+static const double adi_imu_qs_dps[MODES] = {0.08, 0.008, 0.006, 0.006};
 
 static double *res_tau[MODES], *res_1s[MODES], *res_est[MODES];
 static unsigned counts[MODES];
@@ -230,7 +230,7 @@ int main(int argc, char **argv)
     printf("Residual gyro bias, simulated ADIS%s, %u seeded runs x 3 axes (seeds %llu..%llu); "
            "failed or refused runs: %u\n\n",
            v == SIM_ADIS16364 ? "16364" : "1636x/1640x", runs, seed, seed + runs - 1u, failures);
-    printf("| mode | tau | Allan dev. at tau | seed 003 | next tau: mean abs | rms | p95 | "
+    printf("| mode | tau | Allan dev. at tau | [ADI-IMU-QS] | next tau: mean abs | rms | p95 | "
            "rms / Allan | model | estimation: mean abs | rms | p95 | rms / Allan | model | "
            "first 1 s: rms |\n"
            "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
@@ -255,8 +255,8 @@ int main(int argc, char **argv)
         const double next_model = sqrt(white + q * q / 12.0 + 2.0 * corr);
         printf("| %s | %.3g s | %.5f%s | %.3f | %.5f | %.5f | %.5f | %.2f | %.5f | %.5f | %.5f | "
                "%.5f | %.2f | %.5f | %.5f |\n",
-               mode_name[m], t, ref, vs_min ? " (min.)" : "", seed003[m], s.mean_abs, s.rms, s.p95,
-               s.rms / ref, next_model, se.mean_abs, se.rms, se.p95, se.rms / ref, est_model,
+               mode_name[m], t, ref, vs_min ? " (min.)" : "", adi_imu_qs_dps[m], s.mean_abs, s.rms,
+               s.p95, s.rms / ref, next_model, se.mean_abs, se.rms, se.p95, se.rms / ref, est_model,
                s1.rms);
         if (check && !(s.rms <= 2.5 * ref && se.rms <= 2.5 * ref)) {
             printf("CHECK FAILED: %s rms %.5f / %.5f > 2.5 x %.5f\n", mode_name[m], s.rms, se.rms,

@@ -7,7 +7,7 @@
  * report (<image>.stack.txt) are the figures of docs/benchmarks.md, "Kalman and tilt":
  *   1 kf_image_ma      moving average of N = 82 (inclino_avg), the comparison
  *   2 kf_image_fixed   the fixed scalar Kalman filter (inclino_kf, generic filter, n = 1)
- *   3 kf_image_adapt   the adaptive filter of seed 004 (inclino_kf, kf_adapt, one axis)
+ *   3 kf_image_adapt   the adaptive filter of [CN110567483] (inclino_kf, kf_adapt, one axis)
  *   4 kf_image_kf2     the generic filter with n = 2 (angle, bias), predict + update
  *   5 kf_image_tilt    roll and pitch (inclino_tilt, all three modes: tilt_step)
  */

@@ -4,7 +4,7 @@
 //       Tilt steps of 5 and 1 deg (pitch) at 819.2 SPS with engine-idle vibration, passenger
 //       bumps and sensor noise (the vibration model below, docs/kalman.md); each accelerometer
 //       axis goes through a moving average of N (inclino_avg), the fixed scalar Kalman filter
-//       (inclino_kf, n = 1) and the adaptive filter of seed 004 (inclino_kf_adapt); pitch is
+//       (inclino_kf, n = 1) and the adaptive filter of [CN110567483] (inclino_kf_adapt); pitch is
 //       atan2(-a_x, sqrt(a_y^2 + a_z^2)) of the filtered axes (tilt_accel_angles). Prints the rms
 //       error after settling and the 10-90 % rise time of the ensemble mean, per filter.
 //   kf_bench tune [--runs R] [--n N]
@@ -39,6 +39,7 @@ extern "C" {
 #include "inclino/kf.h"
 #include "inclino/kf_adapt.h"
 #include "inclino/tilt.h"
+#include "inclino/tool_summary.h"
 }
 
 namespace
@@ -365,6 +366,7 @@ int cmd_tune(int argc, char **argv)
     MaFilter ma(n);
     const Result rm = evaluate(ma, 5.0, runs, seed);
     std::printf("moving average N = %u: rms %.4f deg, rise %.1f ms\n", n, rm.rms, rm.rise * 1e3);
+    unsigned goals = 0;
     for (uint32_t k : {8u, 16u, 24u, 32u})
         for (double km : {0.75, 1.0})
             for (double st : {0.0, 0.04, 0.06, 0.0872, 0.12})
@@ -374,8 +376,12 @@ int cmd_tune(int argc, char **argv)
                     std::printf("k %2u Ks x %.2f step %.3f Cfrac %.1f: rms %.4f rise %.1f ms%s\n",
                                 k, km, st, cf, r.rms, r.rise * 1e3,
                                 (r.rms <= rm.rms && r.rise <= rm.rise / 4) ? "  GOAL" : "");
+                    if (r.rms <= rm.rms && r.rise <= rm.rise / 4) goals++;
                     std::fflush(stdout);
                 }
+    tool_summary_add("ma_rms_deg", "%.4f", rm.rms);
+    tool_summary_add("ma_rise_ms", "%.1f", rm.rise * 1e3);
+    tool_summary_add("goals", "%u", goals);
     return 0;
 }
 
@@ -412,6 +418,14 @@ int cmd_step(int argc, char **argv)
             std::snprintf(nm, sizeof nm, i == 0 ? "%s N = %u" : "%s", names[i], n);
             std::printf("| %.0f deg | %s | %.4f | %+.4f | %.4f | %.1f | %.1f |\n", step, nm, r.rms,
                         r.mean_err, r.rms_after, r.rise * 1e3, r.t90 * 1e3);
+            if (step == 5.0) { // the 5 deg step's figures, per filter
+                static const char *const key[3] = {"ma", "kf", "adapt"};
+                char kk[40];
+                std::snprintf(kk, sizeof kk, "%s_rms_deg", key[i]);
+                tool_summary_add(kk, "%.4f", r.rms);
+                std::snprintf(kk, sizeof kk, "%s_rise_ms", key[i]);
+                tool_summary_add(kk, "%.1f", r.rise * 1e3);
+            }
         }
     }
     return 0;
@@ -501,16 +515,21 @@ int cmd_cost(const char *which, long count)
         }
     } else {
         std::fprintf(stderr, "unknown filter %s\n", which);
+        tool_summary_add("error", "unknown-filter");
         return 2;
     }
     std::printf("%s: %ld updates (checksum %d)\n", which, count, static_cast<int>(sink));
+    tool_summary_add("filter", "%s", which);
+    tool_summary_add("updates", "%ld", count);
+    tool_summary_add("checksum", "%d", static_cast<int>(sink));
     return 0;
 }
 
 } // namespace
 
-int main(int argc, char **argv)
+int run_command(int argc, char **argv)
 {
+    if (argc >= 2) tool_summary_add("command", "%s", argv[1]);
     if (argc >= 2 && std::strcmp(argv[1], "step") == 0) return cmd_step(argc, argv);
     if (argc >= 2 && std::strcmp(argv[1], "tune") == 0) return cmd_tune(argc, argv);
     if (argc >= 4 && std::strcmp(argv[1], "cost") == 0)
@@ -519,5 +538,14 @@ int main(int argc, char **argv)
         stderr,
         "usage: kf_bench step [--runs R] [--n N] [--seed S] [--k K --C C --D D --A A --B B --p0 P]\n"
         "       kf_bench cost ma|kf1|kf2|kf4|adapt|tilt-feedback|tilt-printed|tilt-kf2 COUNT\n");
+    tool_summary_add("error", "usage");
     return 2;
+}
+
+// The last line on stdout is the summary (docs/tool-summary.md).
+int main(int argc, char **argv)
+{
+    tool_summary_begin("kf_bench");
+    const int st = run_command(argc, argv);
+    return tool_summary_end(st == 0 ? "ok" : "error", st);
 }

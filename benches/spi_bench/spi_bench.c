@@ -8,6 +8,7 @@
  *                      nothing: run it under callgrind, counting only spi_transfer, to get the
  *                      engine's own instructions per frame (the HAL's are the port's)
  */
+#include "inclino/tool_summary.h"
 #include "inclino/sim/board.h"
 #include "inclino/sim/loopback.h"
 #include "inclino/spi.h"
@@ -26,6 +27,8 @@ static int bus_table(void)
     const struct spi_timing t = {500, 100, 100, 9000, 0}; /* 2 MHz, ADIS-like stall */
     unsigned mode, bits, pol;
     int worst_ok = 1;
+    double worst_ratio = 0.0;
+    unsigned violations = 0, rows = 0;
     printf("| mode | bits | CS | SCLK | ns per frame (measured) | bound b*P+S+H(+T) | ratio |\n");
     printf("|---|---|---|---|---|---|---|\n");
     for (pol = 0; pol < 2; pol++) {
@@ -74,12 +77,19 @@ static int bus_table(void)
                 }
                 ratio = per / (double)bound;
                 if (ratio > 1.05 || board.log.total != 0) worst_ok = 0;
+                if (ratio > worst_ratio) worst_ratio = ratio;
+                violations += board.log.total;
+                rows++;
                 printf("| %u | %u | %s | 2 MHz | %.1f | %llu | %.3f |\n", mode, bits,
                        pol ? "held" : "toggled", per, (unsigned long long)bound, ratio);
             }
         }
     }
     printf("\nall within 1.05 x bound and no timing violation: %s\n", worst_ok ? "yes" : "NO");
+    tool_summary_add("rows", "%u", rows);
+    tool_summary_add("worst_ratio", "%.3f", worst_ratio);
+    tool_summary_add("violations", "%u", violations);
+    tool_summary_add("within_bound", "%d", worst_ok);
     return worst_ok ? 0 : 1;
 }
 
@@ -145,6 +155,7 @@ static int cost(unsigned long n)
     uint16_t rx;
     unsigned long i;
     if (spi_bitbang_init(&bb, &bc) != 0 || spi_dev_init(&dev, &bb.bus, &dc) != 0) {
+        tool_summary_add("error", "setup");
         return 1;
     }
     spi_xfer1(&dev, 0, &rx); /* first transfer moves SCLK: keep it out of the count's average */
@@ -153,17 +164,26 @@ static int cost(unsigned long n)
         spi_transfer(&dev, &w, &rx, 1, SPI_CS_TOGGLE);
     }
     printf("%lu frames, last rx %04X\n", n, rx);
+    tool_summary_add("frames", "%lu", n);
+    tool_summary_add("last_rx", "%04X", rx);
     return 0;
 }
 
+/* The last line on stdout is the summary (docs/tool-summary.md). */
 int main(int argc, char **argv)
 {
+    int st;
+    tool_summary_begin("spi_bench");
     if (argc >= 2 && strcmp(argv[1], "bus") == 0) {
-        return bus_table();
+        tool_summary_add("command", "bus");
+        st = bus_table();
+        return tool_summary_end(st == 0 ? "ok" : "fail", st);
     }
     if (argc >= 3 && strcmp(argv[1], "cost") == 0) {
-        return cost(strtoul(argv[2], NULL, 10));
+        tool_summary_add("command", "cost");
+        st = cost(strtoul(argv[2], NULL, 10));
+        return tool_summary_end(st == 0 ? "ok" : "error", st);
     }
     fprintf(stderr, "usage: spi_bench bus | spi_bench cost N\n");
-    return 2;
+    return tool_summary_error("usage", 2);
 }

@@ -1,7 +1,7 @@
 /*
  * app_adis.c - sensor adapter for the ADIS1636x/1640x driver (see app_adis.h).
  *
- * One sample = one data-ready edge + one burst read (sensors.md 3.1: the burst returns every
+ * One sample = one data-ready edge + one burst read (docs/sensor-facts.md §3.1: the burst returns every
  * output of one sample set in one CS period, so the axes are coherent). Conversions are the
  * driver's, exact to 0.5 LSB Q16.
  */

@@ -1,7 +1,7 @@
 /*
  * app_sca3000.c - sensor adapter for the SCA3000 driver (see app_sca3000.h).
  *
- * No source describes a new-data interrupt for direct measurement mode (sensors.md 1.6), so
+ * No source describes a new-data interrupt for direct measurement mode (docs/sensor-facts.md §1.6), so
  * the output data rate paces the reads: a read waits until one output period after the
  * previous one. The part latches X, Y, Z together when CS falls (one CS period reads a coherent
  * set: the driver reads them in one burst). Being late by whole periods is reported as missed
@@ -11,7 +11,7 @@
 
 #include <stddef.h>
 
-/* Ends of the 13-bit output range (sensors.md 1.4). */
+/* Ends of the 13-bit output range (docs/sensor-facts.md §1.4). */
 #define APP_SCA3000_COUNT_MIN (-4096)
 #define APP_SCA3000_COUNT_MAX 4095
 

@@ -6,8 +6,9 @@
  * compiled with -fno-tree-loop-distribute-patterns (cmake/inclino.cmake), without which gcc
  * would turn these very loops back into calls to memcpy/memset: infinite recursion.
  *
- * INC_RT_NAME lets tests/hal_rt compile this file under other names, so the same code is
- * tested on the host and under QEMU next to the C library's own functions.
+ * INC_RT_NAME lets tests/hal_rt (test hal_rt_mem, through tests/hal_rt/mem_renamed.c) compile
+ * this file as rt_memcpy, rt_memset, rt_memmove and rt_memcmp, so the same code is tested on the
+ * host, under QEMU on Cortex-M and on rv32, next to the C library's own functions.
  */
 #include <stddef.h>
 #include <stdint.h>

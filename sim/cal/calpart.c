@@ -5,7 +5,7 @@
 #include <stddef.h>
 #include <string.h>
 
-#define N_POINTS 9 /* -20, -10, ..., 60 degC: seed 002's 10 degC grid */
+#define N_POINTS 9 /* -20, -10, ..., 60 degC: [TEMP-LORENTZ]'s 10 degC grid */
 
 double sim_calpart_tcurve_eval(const struct sim_calpart_tcurve *c, double t_c, double m)
 {
@@ -45,7 +45,7 @@ double sim_calpart_scale_ppm_per_c(const struct sim_calpart_params *p, int axis)
         hi = y > hi ? y : hi;
         sum += y;
     }
-    /* Seed 002 eq. (11): (Kmax - Kmin) / Kmean * 1e6 / 80. */
+    /* [TEMP-LORENTZ] eq. (11): (Kmax - Kmin) / Kmean * 1e6 / 80. */
     return (hi - lo) / (sum / N_POINTS) * 1e6 / (SIM_CALPART_T_MAX - SIM_CALPART_T_MIN);
 }
 
@@ -104,8 +104,8 @@ static void set_axis_row(double row[3], int i, double e1, double e2)
 
 void sim_calpart_paper(struct sim_calpart_params *p)
 {
-    /* Per-axis variations of one falling Lorentz tail (peak just below -20 degC), as in seed
-     * 002's fig. 1 where the bias falls with temperature (linear fit slope -0.153 mg/degC, eq.
+    /* Per-axis variations of one falling Lorentz tail (peak just below -20 degC), as in
+     * [TEMP-LORENTZ]'s fig. 1 where the bias falls with temperature (linear fit slope -0.153 mg/degC, eq.
      * 6). The shapes were chosen (a grid search over centre, width, linear and cubic shares of
      * the noiseless curve) so that the linear and Lorentz fits land near the paper's residuals:
      * bias 14 -> 6.9 -> 1.3 mg, scale factor 151.6 -> 45.9 -> 11.8 ppm/degC. The cubic share

@@ -2,7 +2,7 @@
  * Overlapping Allan deviation (sim/allan.h): exact values on sequences worked by hand, the tau
  * grid, bad input, the read-offs, and the issue's acceptance test: on simulated parts the tool
  * recovers the configured angle random walk and bias instability within 10 %, and the
- * simulated ADIS1636x/1640x gyro follows its configured (seed 003) curve.
+ * simulated ADIS1636x/1640x gyro follows its configured ([ADI-IMU-QS]) curve.
  */
 #include "inclino/error.h"
 #include "inclino/sim/allan.h"
@@ -181,7 +181,7 @@ static void test_recovers_arw_and_bi(void)
 
 /* The simulated ADIS1636x/1640x gyro (error model + 0.05 deg/s register quantisation), 4000 s
  * at 819.2 SPS: the measured curve follows the configured one (5 % at 0.15 s and 1 s where
- * thousands of clusters average, 12 % at 30 s and 100 s), and the configured one is seed 003's
+ * thousands of clusters average, 12 % at 30 s and 100 s), and the configured one is [ADI-IMU-QS]'s
  * (tests/noise). ARW against the configured density within 10 %. */
 static void test_adis_curve(void)
 {

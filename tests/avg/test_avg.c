@@ -130,7 +130,7 @@ static void test_block_exact(void)
         CHECK_OK(avg_block_push(&b, INT32_MIN, &mean, &done));
     }
     CHECK_EQ_INT(mean, INT32_MIN);
-    /* seed 003's manual calibration length, random full-range samples, against the reference */
+    /* [ADI-IMU-QS]'s manual calibration length, random full-range samples, against the reference */
     {
         int64_t sum = 0;
         sim_rng_seed(&rng, 1);

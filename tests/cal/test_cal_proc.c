@@ -1,4 +1,4 @@
-/* On-device calibration procedures (firmware/signal/cal, cal_proc.c): one-point, +-1 g flip (seed 000,
+/* On-device calibration procedures (firmware/signal/cal, cal_proc.c): one-point, +-1 g flip ([ADI-EPB],
  * with the correct gain, and what its misprinted 0.5 would do), six-position, still-interval
  * averaging, gyro offset and turn scale; exact values, error bounds, every refusal. Host and
  * QEMU. */
@@ -34,9 +34,9 @@ static void test_flip_exact(void)
     CHECK_EQ_INT(off, -1);
 }
 
-static void test_seed000_printed_gain_is_wrong(void)
+static void test_printed_flip_gain_is_wrong(void)
 {
-    /* Seed 000 prints gain = 0.5 * (A+ - A-) / 2. For an ideal part (A+ = +1 g, A- = -1 g) that
+    /* [ADI-EPB] prints gain = 0.5 * (A+ - A-) / 2. For an ideal part (A+ = +1 g, A- = -1 g) that
      * is 0.5, and a_true = (a_out - offset) / gain would read 2 g on the +1 g face. The module
      * uses (A+ - A-) / 2 = 1.0. */
     const int64_t a_pos = CAL_ONE_G, a_neg = -CAL_ONE_G;
@@ -278,7 +278,7 @@ static double run_turn(struct cal_turn *t, unsigned axis, double rate, double sc
 
 static void test_turn(void)
 {
-    /* Seed 003's ADIS rate: 819.2 SPS, dt = 1.220703125 ms = 2^30 / 819.2 in Q30 (rounded). */
+    /* [ADI-IMU-QS]'s ADIS rate: 819.2 SPS, dt = 1.220703125 ms = 2^30 / 819.2 in Q30 (rounded). */
     const fx_q30_t dt = (fx_q30_t)lround(CALT_Q30 / 819.2);
     const fx_q16_t off[3] = {G(0.42), G(-0.77), G(0.15)};
     const long n = 3277; /* 4 s at 90 deg/s: 360 deg */
@@ -334,7 +334,7 @@ static void test_turn(void)
 int main(void)
 {
     UNIT_RUN(test_flip_exact);
-    UNIT_RUN(test_seed000_printed_gain_is_wrong);
+    UNIT_RUN(test_printed_flip_gain_is_wrong);
     UNIT_RUN(test_flip_bound);
     UNIT_RUN(test_flip_refusals);
     UNIT_RUN(test_one_point);

@@ -1,6 +1,6 @@
 /*
  * The calibration chain on a device model: the simulated part's errors (sim/calpart.h, part A:
- * seed 002's temperature curves, seed 000's nonlinearity, misalignment) plugged into the SCA3000
+ * [TEMP-LORENTZ]'s temperature curves, [ADI-EPB]'s nonlinearity, misalignment) plugged into the SCA3000
  * register model through its error-model hook, read by the SCA3000 driver over the bit-banged
  * SPI of the simulated board, and corrected by firmware/signal/cal:
  *   1. the counts read over SPI are exactly the error model's output quantised at 0.75 mg;
@@ -153,7 +153,7 @@ static void test_hook_and_six_position(void)
         CHECK_EQ_INT(off[i], o);
         CHECK_EQ_INT(gain[i], g);
         /* Against the part: the flip offset is the bias plus the even nonlinearity (nl2 * K),
-         * the gain the scale factor times (1 + nl3) (seed 000's flip sees both), within the
+         * the gain the scale factor times (1 + nl3) ([ADI-EPB]'s flip sees both), within the
          * 0.75 mg quantisation. */
         CHECK_NEAR(off[i] / CALT_Q16,
                    sim_calpart_tcurve_eval(&errs.p.acc_bias[i], 25.0, errs.m) +

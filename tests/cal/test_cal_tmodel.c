@@ -83,7 +83,7 @@ static void test_exact_points(void)
     CHECK_EQ_INT(y, -6234);
     CHECK_OK(cal_tmodel_eval(&m, 40 * 65536, &y)); /* u = 0.5 */
     CHECK_EQ_INT(y, -1234 + 2500);
-    /* PARABOLA: seed 000's three points pass exactly (u = -1, 0, +1). */
+    /* PARABOLA: [ADI-EPB]'s three points pass exactly (u = -1, 0, +1). */
     m.kind = CALREC_TM_PARABOLA;
     m.p[2] = -700;
     CHECK_OK(cal_tmodel_eval(&m, -20 * 65536, &y));

@@ -25,7 +25,7 @@ static void test_paper_magnitudes(void)
     int a;
     sim_calpart_paper(&p);
     for (a = 0; a < 3; a++) {
-        /* Seed 002: raw bias spread 14 mg, scale factor 151.6 ppm/degC over -20..60 degC. */
+        /* [TEMP-LORENTZ]: raw bias spread 14 mg, scale factor 151.6 ppm/degC over -20..60 degC. */
         CHECK_NEAR(sim_calpart_bias_spread(&p, a), 0.014, 1e-12);
         CHECK_NEAR(sim_calpart_scale_ppm_per_c(&p, a), 151.6, 1e-6);
         /* Falling bias with temperature, like the paper's fig. 1. */

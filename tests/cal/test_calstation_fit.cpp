@@ -1,5 +1,5 @@
 // The calibration station end to end (tools/calstation): a simulated part measured on the
-// simulated station, fitted, and checked against the part's true errors; and seed 002's
+// simulated station, fitted, and checked against the part's true errors; and [TEMP-LORENTZ]'s
 // comparison with the goal of the best model (<= 0.5 mg, <= 5 ppm/degC) on two parts, in-sample
 // and held out. Host only (C++/Eigen).
 #include "inclino/calstation/compare.hpp"
@@ -89,13 +89,13 @@ static void test_part_a_end_to_end()
         CHECK_NEAR(c.acc_tscale[i].eval(25.0), 0.0, 1e-12);
     }
     CHECK(c.have_nonlin);
-    // Whole correction over -20..60 degC, tilts within +-30 deg about both axes (seed 000's EPB
+    // Whole correction over -20..60 degC, tilts within +-30 deg about both axes ([ADI-EPB]'s EPB
     // range): within 0.6 mg (0.034 deg of tilt). What is left is mostly the cubic's truncation of
     // the inverse element nonlinearity (its v^4 term, 5*nl2*nl3 = 0.5 mg at 1 g) and the
     // temperature models' residual.
     const double full = worst_error(c, p, 30.0, -20.0, 60.0);
     const double at25 = worst_error(c, p, 30.0, 25.0, 25.0);
-    // Seed 000's two-point flip alone (ambient block: offset and gain, no misalignment, no
+    // [ADI-EPB]'s two-point flip alone (ambient block: offset and gain, no misalignment, no
     // nonlinearity, no temperature model) for comparison.
     CalResult flip = c;
     for (int i = 0; i < 3; i++) {
@@ -177,7 +177,7 @@ static void test_ambient_only()
 
 static void test_compare_goal()
 {
-    // Seed 002 reproduced: part A and a seeded part B, fitted from their own data.
+    // [TEMP-LORENTZ] reproduced: part A and a seeded part B, fitted from their own data.
     std::vector<CompareAxis> rows;
     CompareConfig cfg;
     if (UNIT_SANITIZED) {

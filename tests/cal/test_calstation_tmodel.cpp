@@ -97,7 +97,7 @@ static void test_three_point()
     CHECK(f.model.kind == TKind::Parabola);
     // A parabola through the three points is the true parabola.
     CHECK_NEAR(max_err(f.model, f_par), 0.0, 1e-15);
-    // Seed 000's steps by hand: c = y(Ta); b from the hot point; a from the cold point.
+    // [ADI-EPB]'s steps by hand: c = y(Ta); b from the hot point; a from the cold point.
     const double c = f_par(25), b = (f_par(60) - c) / 35.0;
     const double a = (f_par(-20) - (c + b * (-45.0))) / ((-45.0) * (-80.0));
     CHECK_NEAR(a, -3e-6, 1e-15);

@@ -8,7 +8,7 @@
 void fix_binding(struct calrec_binding *b)
 {
     b->family = CALREC_FAMILY_ADIS163XX;
-    b->product = 16364u; /* PROD_ID 0x3FEC, sensors.md 3.5 */
+    b->product = 16364u; /* PROD_ID 0x3FEC, docs/sensor-facts.md §3.5 */
     b->revision = 0u;
     b->serial = 0x1234u;
     b->lot_id1 = 0xA5A5u;
@@ -40,7 +40,7 @@ void fix_record(struct calrec *r)
         r->acc_nonlin[a][2] = 10737418;  /* 0.01 /g */
         r->acc_nonlin[a][3] = -85899346; /* -0.08 /g^2 */
     }
-    /* x: seed 000 three-point parabola, centred at 25 degC, span 40 degC. */
+    /* x: [ADI-EPB] three-point parabola, centred at 25 degC, span 40 degC. */
     r->acc_tbias[0].kind = CALREC_TM_PARABOLA;
     r->acc_tbias[0].t_ref = 25 * CALREC_Q16_ONE;
     r->acc_tbias[0].t_span = 40 * CALREC_Q16_ONE;
@@ -59,7 +59,7 @@ void fix_record(struct calrec *r)
     r->acc_tbias[2].p[1] = 900;
     r->acc_tbias[2].p[2] = 30 * CALREC_Q16_ONE;
     r->acc_tbias[2].p[3] = 20 * CALREC_Q16_ONE;
-    /* x scale: 9-knot table, -20..60 degC every 10 degC (seed 002's sweep). */
+    /* x scale: 9-knot table, -20..60 degC every 10 degC ([TEMP-LORENTZ]'s sweep). */
     r->acc_tscale[0].kind = CALREC_TM_PWL;
     r->acc_tscale[0].n = 9;
     r->acc_tscale[0].t_ref = -20 * CALREC_Q16_ONE;

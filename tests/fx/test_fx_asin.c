@@ -45,7 +45,7 @@ static void test_exact_and_clamp(void)
     CHECK_EQ_INT(fx_asin_deg(INT32_MIN), -FX_DEG_90);
     /* one code below 1: asin(1 - 2^-30) = 90 - 0.0024727 deg = 5898077.94 LSB */
     CHECK_EQ_INT(fx_asin_deg(FX_Q30_ONE - 1), 5898078);
-    /* seed 000: asin(0.129) = 7.41 deg, asin(0.0224) = 1.28 deg (error budget totals) */
+    /* [ADI-EPB]: asin(0.129) = 7.41 deg, asin(0.0224) = 1.28 deg (error budget totals) */
     CHECK_EQ_INT(fx_asin_deg(138512695), 485740); /* 0.129 * 2^30: 7.41181 deg = 485740.38 LSB */
 }
 

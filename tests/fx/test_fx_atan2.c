@@ -61,6 +61,11 @@ static void test_exact_values(void)
     CHECK_EQ_INT(fx_atan2_deg(INT32_MAX, INT32_MIN), FX_DEG_90 + FX_DEG_45);
     CHECK_EQ_INT(fx_atan2_deg(1, INT32_MAX), 0);            /* 2.7e-8 deg */
     CHECK_EQ_INT(fx_atan2_deg(-1, INT32_MIN), -FX_DEG_180); /* -180 + 2.7e-8 deg */
+    /* The range is [-180, 180]: below the negative x axis, |y/x| < ~1.3e-7 rounds to -180. */
+    CHECK_EQ_INT(fx_atan2_deg(-1, -1073741824), -FX_DEG_180); /* -180 + 5.3e-8 deg */
+    CHECK_EQ_INT(fx_atan2_deg(1, -1073741824), FX_DEG_180);
+    CHECK_EQ_INT(fx_atan2_deg(-1, -8388608), -FX_DEG_180);     /* 0.45 LSB from -180 */
+    CHECK_EQ_INT(fx_atan2_deg(-1, -4194304), -FX_DEG_180 + 1); /* 0.90 LSB from -180 */
     CHECK_EQ_INT(fx_atan2_deg(INT32_MAX, 1), FX_DEG_90);
     CHECK_EQ_INT(fx_atan2_deg(1, 1), FX_DEG_45);
     CHECK_EQ_INT(fx_atan2_deg(3, 4), 2416306); /* 36.8699 deg = 2416305.61 LSB */

@@ -1,4 +1,4 @@
-/* GPS-gap speed blending (seed 001): the factor K against its formula, propagation, blending,
+/* GPS-gap speed blending ([KF-SCA3000]): the factor K against its formula, propagation, blending,
  * gaps and bad input. */
 #include "inclino/gpsblend.h"
 #include "unit.h"
@@ -41,7 +41,7 @@ static void test_factor_values(void)
     CHECK_NEAR(q30(gpsb_factor(q, q, 0)), sqrt(0.5), 4.0 / 1073741824.0);
     CHECK_NEAR(q30(gpsb_factor(-q, q, 1)), 1.0 - (1.0 - sqrt(0.5)) * (1.0 - sqrt(0.5)),
                9.0 / 1073741824.0);
-    /* Seed 001's curve with Q = 20: at A = 30 the one-round K is 0.972; at A = 5 it is small. */
+    /* [KF-SCA3000]'s curve with Q = 20: at A = 30 the one-round K is 0.972; at A = 5 it is small. */
     CHECK_NEAR(q30(gpsb_factor(to_q16(0.030), q, 1)), 0.9718, 0.0001);
     CHECK(q30(gpsb_factor(to_q16(0.005), q, 1)) < 0.5);
     CHECK_EQ_INT(gpsb_factor(0, q, 3), 0);

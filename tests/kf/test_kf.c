@@ -1,7 +1,7 @@
 /*
  * test_kf.c - the generic fixed-point Kalman filter (inclino/kf.h) on hand-checkable cases.
  *
- * Every expected value below is worked out by hand from seed 001's five equations with numbers
+ * Every expected value below is worked out by hand from [KF-SCA3000]'s five equations with numbers
  * chosen so that the exact result is a short binary fraction; the fixed-point filter must then
  * match it exactly (its roundings have nothing to drop). Plus the bad-input contract, the
  * saturation contract, symmetry and positivity over a long random run. Runs on the host, under

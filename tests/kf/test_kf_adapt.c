@@ -1,5 +1,5 @@
 /*
- * test_kf_adapt.c - the adaptive per-axis filter of seed 004 (inclino/kf_adapt.h) on
+ * test_kf_adapt.c - the adaptive per-axis filter of [CN110567483] (inclino/kf_adapt.h) on
  * hand-checkable cases: dz over a partial and a sliding window (with rounding ties), Q and R from
  * C, D, A, B, the scalar steps with a gain of exactly 1/2 and one rounded gain, coasting, the
  * six-axis wrapper and bad input. Integer only: host, QEMU Cortex-M and rv32imac.
@@ -127,7 +127,7 @@ static void test_r_abs(void)
     CHECK_EQ_INT(st.k, FX_Q30_ONE / 8 * 5);
 }
 
-/* The point of the seed's filter: on a step, |dz| raises Q and the gain, so it follows much
+/* The point of the patent's filter: on a step, |dz| raises Q and the gain, so it follows much
  * faster than the same filter without D, while both smooth alike when the input is still. */
 static void test_adaptive_follows_step(void)
 {

@@ -292,7 +292,7 @@ static void test_joseph_vs_exact(void)
     printf("kf Joseph: worst error = %.3f of (2 LSB + 2^-28 max|P|)\n", worst);
 }
 
-/* kf_adapt: independent model of seed 004 steps 2-3 with the documented roundings. */
+/* kf_adapt: independent model of [CN110567483] steps 2-3 with the documented roundings. */
 static void test_adapt_bit_exact(void)
 {
     unsigned trial, mism = 0, steps = 0;

@@ -2,7 +2,7 @@
  * The seeded error models of sim/noise.h: configuration checks, reproducibility, each term's
  * statistics (white density, random-walk increments, quantisation step, constant and thermal
  * bias exactly), the Gauss-Markov flicker layout and its flat Allan floor, the analytic Allan
- * variance in its limits, and the ADIS1636x/1640x preset against seed 003's curve.
+ * variance in its limits, and the ADIS1636x/1640x preset against [ADI-IMU-QS]'s curve.
  * Sizes are small enough for QEMU (the long Allan runs are in tests/allan, host only).
  */
 #include "inclino/error.h"
@@ -276,7 +276,7 @@ static void test_avar_limits(void)
     }
 }
 
-/* The ADIS1636x/1640x gyro preset against the Allan curve behind seed 003 (figure 6). */
+/* The ADIS1636x/1640x gyro preset against the Allan curve behind [ADI-IMU-QS] (figure 6). */
 static void test_adis_preset(void)
 {
     struct sim_noise_axis ax;
@@ -294,7 +294,7 @@ static void test_adis_preset(void)
     }
     CHECK_NEAR(best, 0.006, 0.0003);      /* seed: minimum about 0.006 */
     CHECK(tbest > 80.0 && tbest < 160.0); /* seed: near 100 s */
-    /* seed 003: unfiltered gyro noise below 1 deg/s rms */
+    /* [ADI-IMU-QS]: unfiltered gyro noise below 1 deg/s rms */
     CHECK(ax.white / sqrt(DT_ADIS) < 1.0);
     CHECK_NEAR(ax.white / sqrt(DT_ADIS), 0.887, 0.005);
 }

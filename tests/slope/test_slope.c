@@ -1,5 +1,5 @@
 /*
- * EPB slope estimator: seed 000's worked error budget, exact cases, every flag, the error bounds
+ * EPB slope estimator: [ADI-EPB]'s worked error budget, exact cases, every flag, the error bounds
  * of the fixed-point arithmetic against double precision, the lifetime-exceedance noise factor.
  */
 #include "inclino/slope.h"
@@ -66,9 +66,9 @@ static struct slope_input level_input(double ax, double ay, double az)
     return in;
 }
 
-/* Seed 000, Table 1 "after calibration": 10 mg nonlinearity + 10 mg drift + 2.4 mg noise
+/* [ADI-EPB], Table 1 "after calibration": 10 mg nonlinearity + 10 mg drift + 2.4 mg noise
  * (0.4 mg rms after a 100x average, i.e. 4 mg per sample, times 6) = 22.4 mg -> 1.28 deg. */
-static void test_seed000_budget(void)
+static void test_adi_epb_budget(void)
 {
     struct slope_cfg c = base_cfg();
     struct slope_input in = level_input(0.0, 0.0, 1.0);
@@ -85,10 +85,10 @@ static void test_seed000_budget(void)
     CHECK(q16(r.noise_g) >= 6 * q16(to_q16(0.004)) / 10.0); /* never rounded down */
     CHECK_NEAR(q16(r.accel_bound_g), 0.0224, 3.0 / 65536);
     CHECK_NEAR(q16(r.bound_deg), asin(0.0224) / D2R, 4.0 / 65536); /* 1.2836 deg */
-    printf("seed 000 budget: e_a = %.5f g, bound = %.4f deg (seed: 22.4 mg, 1.28 deg)\n",
+    printf("[ADI-EPB] budget: e_a = %.5f g, bound = %.4f deg (seed: 22.4 mg, 1.28 deg)\n",
            q16(r.accel_bound_g), q16(r.bound_deg));
     /* Before calibration: 30 mg sensitivity (3 % of 1 g on the axis: at 0 g it is 0) + 15 mg
-     * offset + 10 mg nonlinearity + 50 mg drift + 24 mg noise; the seed sums 129 mg at full
+     * offset + 10 mg nonlinearity + 50 mg drift + 24 mg noise; the article sums 129 mg at full
      * scale. On a 30 deg slope the sensitivity term is 3 % of 0.5 g = 15 mg. */
     c.budget.sensitivity = (fx_q30_t)lround(0.03 * 1073741824.0);
     c.budget.offset_g = to_q16(0.015);
@@ -322,7 +322,7 @@ static void test_sigma_factor(void)
     }
     CHECK(worst <= 0.005);
     printf("sigma factor: max |k error| %.5f\n", worst);
-    /* Seed 000's 6 sigma: r = 1.97e-9; e.g. 1e-3 expected exceedances over 507 000 runs. */
+    /* [ADI-EPB]'s 6 sigma: r = 1.97e-9; e.g. 1e-3 expected exceedances over 507 000 runs. */
     CHECK_OK(slope_sigma_factor(506800u, to_q16(0.001), &k));
     CHECK_NEAR(q16(k), 6.0, 0.005);
     CHECK_ERR(slope_sigma_factor(0, 100, &k), INC_ERR_INVAL);
@@ -338,7 +338,7 @@ static void test_sigma_factor(void)
 
 int main(void)
 {
-    UNIT_RUN(test_seed000_budget);
+    UNIT_RUN(test_adi_epb_budget);
     UNIT_RUN(test_exact_cases);
     UNIT_RUN(test_flags);
     UNIT_RUN(test_invalid);

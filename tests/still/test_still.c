@@ -2,7 +2,7 @@
  * Stillness and thermal settling (firmware/signal/still): configuration checks, exact window statistics
  * and threshold boundaries, the state machine, each test's trigger (variance, steady rotation,
  * steady acceleration, slow tilt, overrange) with int32 extremes, and simulated ADIS1636x-like
- * data (white noise of the seed-003 density, 0.05 deg/s and 1 mg per LSB): at rest -> AT_REST
+ * data (white noise of the [ADI-IMU-QS] density, 0.05 deg/s and 1 mg per LSB): at rest -> AT_REST
  * with no false alarm, vibration / rotation / tilt -> MOVING; a warming part -> settled only once
  * the temperature stops moving.
  * Host and QEMU (fewer simulated windows where UNIT_REDUCED: QEMU, sanitizers).

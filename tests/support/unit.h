@@ -3,9 +3,18 @@
  *
  * A test program is a main() that runs cases with UNIT_RUN() and returns unit_report(). Every
  * CHECK prints the file, line, expression and the values involved when it fails, counts the
- * failure and lets the case continue; REQUIRE variants return from the case. The exit status is
- * the number of failed checks (capped at 125), so CTest sees a failure on the host and, through
- * QEMU's semihosting exit code, on the emulated MCU.
+ * failure and lets the case continue; REQUIRE variants return from the case. CHECK_OK and
+ * CHECK_ERR compare error codes (base/error) and print them by name (inc_err_name). The exit
+ * status is the number of failed checks (capped at 125), so CTest sees a failure on the host and,
+ * through QEMU's semihosting exit code, on the emulated MCU.
+ *
+ * Command line (docs/build.md, "Running one test case"): `--case NAME` runs only the case NAME
+ * (the name given to UNIT_RUN, i.e. the function's name; repeat the option for several), and
+ * `--list` prints the case names without running any. A --case that names no case fails the
+ * program. Other arguments are left to the test. On the host the options are read before main()
+ * runs (a glibc constructor, so no test's main() has to pass them on); a test whose main() has
+ * argc/argv may also hand them over with unit_args(), which is how a target without that
+ * constructor (the QEMU boards call main() without arguments) would get them.
  *
  * Works with any hosted C library (glibc on the host, newlib under QEMU).
  */
@@ -15,6 +24,8 @@
 #include <stdint.h>
 #include <stdbool.h>
 #include <inttypes.h>
+
+#include "inclino/error.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -76,13 +87,19 @@ void unit_fail(const char *file, int line, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)))
 #endif
     ;
-void unit_begin(const char *name);
+/* Whether the case `name` runs (it is selected, or there is no --case and no --list); the case
+ * becomes the current one for the failure messages either way. */
+bool unit_begin(const char *name);
+/* Reads --case NAME (repeatable) and --list out of argv; other arguments are ignored. */
+void unit_args(int argc, char **argv);
 int unit_report(void);
+/* The failure message of CHECK_OK / CHECK_ERR: both codes by name and value. */
+void unit_fail_err(const char *file, int line, const char *expr, const char *want_expr,
+                   long long got, long long want);
 
-#define UNIT_RUN(fn)     \
-    do {                 \
-        unit_begin(#fn); \
-        fn();            \
+#define UNIT_RUN(fn)               \
+    do {                           \
+        if (unit_begin(#fn)) fn(); \
     } while (0)
 
 #define CHECK(cond)                                                     \
@@ -138,8 +155,15 @@ int unit_report(void);
                       unit_a_, unit_b_, unit_d_, unit_t_);                                     \
     } while (0)
 
-#define CHECK_OK(expr) CHECK_EQ_INT((expr), 0)
-#define CHECK_ERR(expr, err) CHECK_EQ_INT((expr), (err))
+/* An error code (enum inc_err) against the expected one; a failure prints both by name, e.g.
+ * "f(x) == INC_ERR_RANGE: ERR_BUS (-4) != ERR_RANGE (-10)". */
+#define CHECK_ERR(expr, err)                                                                      \
+    do {                                                                                          \
+        long long unit_a_ = (long long)(expr), unit_b_ = (long long)(err);                        \
+        unit_checks++;                                                                            \
+        if (unit_a_ != unit_b_) unit_fail_err(__FILE__, __LINE__, #expr, #err, unit_a_, unit_b_); \
+    } while (0)
+#define CHECK_OK(expr) CHECK_ERR((expr), INC_OK)
 
 #ifdef __cplusplus
 }

@@ -1,6 +1,6 @@
 /*
  * test_tilt.c - roll/pitch estimation (inclino/tilt.h): accelerometer angles, the three modes on
- * a tilted sensor with a gyro bias (the seed-004 step-4 question), rejection of accelerometer and
+ * a tilted sensor with a gyro bias (the [CN110567483] step-4 question), rejection of accelerometer and
  * gyro samples, sample gaps and bad input. Host and QEMU Cortex-M (uses libm for the simulated
  * inputs and the double reference angles). The runs are shorter on the emulated MCU
  * (TILT_SECONDS); the bounds are the same.
@@ -203,7 +203,7 @@ static struct run_result run_static(uint32_t mode, double seconds)
     return res;
 }
 
-/* The seed-004 step-4 question. As printed, the offset cancels the previous correction: the
+/* The [CN110567483] step-4 question. As printed, the offset cancels the previous correction: the
  * prediction is the pure gyro integral and the angle error grows as (1 - K2) b t. The corrected
  * feedback and the two-state filter estimate the bias and hold the angle. */
 static void test_step4_printed_drifts(void)

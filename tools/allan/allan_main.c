@@ -21,13 +21,14 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "inclino/tool_summary.h"
 #include "inclino/error.h"
 #include "inclino/sim/allan.h"
 #include "inclino/sim/inertial.h"
 #include "inclino/sim/noise.h"
 
 #define MAX_POINTS 1024u
-#define ADIS_GYRO_LSB 0.05 /* deg/s per LSB, +-300 deg/s range (sensors.md 3.3) */
+#define ADIS_GYRO_LSB 0.05 /* deg/s per LSB, +-300 deg/s range (docs/sensor-facts.md §3.3) */
 #define ADIS_GYRO_BITS 14u
 
 struct args {
@@ -208,16 +209,17 @@ int main(int argc, char **argv)
     double *y = NULL, *theory = NULL, dt = 0.0;
     size_t n = 0, count = 0, i;
     int err;
+    tool_summary_begin("allan");
     if (parse(argc, argv, &a) != 0) {
         usage();
-        return 1;
+        return tool_summary_error("usage", 1);
     }
     if (a.csv != NULL) {
         size_t bad = 0;
         FILE *f = strcmp(a.csv, "-") == 0 ? stdin : fopen(a.csv, "r");
         if (f == NULL) {
             fprintf(stderr, "allan: cannot open %s\n", a.csv);
-            return 2;
+            return tool_summary_error("cannot-open", 2);
         }
         err = sim_allan_read_csv(f, a.col, a.time_col, a.scale, &y, &n, &dt, &bad);
         if (f != stdin) {
@@ -225,7 +227,8 @@ int main(int argc, char **argv)
         }
         if (err != INC_OK) {
             fprintf(stderr, "allan: %s: line %zu: %s\n", a.csv, bad, inc_err_name(err));
-            return 2;
+            tool_summary_add("line", "%zu", bad);
+            return tool_summary_error(inc_err_name(err), 2);
         }
         if (a.time_col < 0) {
             dt = 1.0 / a.rate_hz;
@@ -233,13 +236,13 @@ int main(int argc, char **argv)
     } else {
         err = simulate(&a, &y, &n, &dt, &ax);
         if (err != INC_OK) {
-            return err == INC_ERR_INVAL ? 1 : 3;
+            return tool_summary_error(inc_err_name(err), err == INC_ERR_INVAL ? 1 : 3);
         }
     }
     pts = malloc(MAX_POINTS * sizeof(*pts));
     if (pts == NULL) {
         free(y);
-        return 3;
+        return tool_summary_error(inc_err_name(INC_ERR_NO_SPACE), 3);
     }
     opts.per_decade = a.per_decade;
     opts.min_clusters = a.min_clusters;
@@ -248,7 +251,7 @@ int main(int argc, char **argv)
     if (err != INC_OK || count == 0u) {
         fprintf(stderr, "allan: Allan deviation failed: %s\n", inc_err_name(err));
         free(pts);
-        return 3;
+        return tool_summary_error(inc_err_name(err != INC_OK ? err : INC_ERR_DEGENERATE), 3);
     }
     if (sim_allan_readoff(pts, count, a.max_rel_err, &r) != INC_OK) {
         fprintf(stderr,
@@ -256,13 +259,13 @@ int main(int argc, char **argv)
                 "longer or pass a larger --min-rel-err\n",
                 a.max_rel_err > 0.0 ? a.max_rel_err : SIM_ALLAN_MIN_REL_ERR);
         free(pts);
-        return 3;
+        return tool_summary_error("uncertain", 3);
     }
     if (a.theory) {
         theory = malloc(count * sizeof(*theory));
         if (theory == NULL) {
             free(pts);
-            return 3;
+            return tool_summary_error(inc_err_name(INC_ERR_NO_SPACE), 3);
         }
         for (i = 0; i < count; i++) {
             theory[i] = sim_noise_adev(&ax, pts[i].tau_s, dt);
@@ -341,5 +344,24 @@ int main(int argc, char **argv)
     }
     free(theory);
     free(pts);
-    return err;
+    tool_summary_add("samples", "%zu", n);
+    tool_summary_add("dt_s", "%.6g", dt);
+    tool_summary_add("points", "%zu", count);
+    tool_summary_add("unit", "%s", a.unit);
+    if (r.arw_valid) {
+        tool_summary_add("arw", "%.5g", r.arw);
+    } else {
+        tool_summary_add("arw", "n/a");
+    }
+    tool_summary_add("adev_min", "%.5g", r.adev_min);
+    tool_summary_add("tau_min_s", "%.5g", r.tau_min_s);
+    tool_summary_add("min_interior", "%d", r.min_interior ? 1 : 0);
+    tool_summary_add("bias_instability", "%.5g", r.bias_instability);
+    if (a.theory) {
+        tool_summary_add("model_adev_1s", "%.5g", sim_noise_adev(&ax, 1.0, dt));
+    }
+    if (err != 0) {
+        tool_summary_add("error", "%s", err == 1 ? "usage" : "io");
+    }
+    return tool_summary_end(err == 0 ? "ok" : "error", err);
 }

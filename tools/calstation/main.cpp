@@ -9,7 +9,10 @@
 //   calstation compare [--cycles N] [--seeds S1,S2,...]   (part A plus seeded parts; default 2)
 //
 // Exit status: 0 success, 1 bad input (message on stderr, nothing written), 2 usage error.
+// The last line on stdout is the summary (docs/tool-summary.md): a refusal gives
+// error=<inc_err name> problem=<slug> [line=N] [column=NAME] [coefficient=NAME].
 #include "inclino/error.h"
+#include "inclino/tool_summary.h"
 #include "inclino/calstation/compare.hpp"
 #include "inclino/calstation/fit.hpp"
 #include "inclino/calstation/record.hpp"
@@ -41,7 +44,75 @@ int usage()
         "  calstation show RECORD.bin\n"
         "  calstation compare [--cycles N] [--seeds S1,S2,...]\n",
         stderr);
+    tool_summary_add("error", "usage");
     return 2;
+}
+
+// The summary keys of a refusal: the library reports its problems as text, which is sorted
+// here into an error code and a short problem name (the message itself stays on stderr).
+struct Problem {
+    const char *needle, *code, *slug;
+};
+const Problem kProblems[] = {
+    {"empty station file", "ERR_FORMAT", "empty-file"},
+    {"no column header", "ERR_FORMAT", "no-header"},
+    {"no measurement rows", "ERR_FORMAT", "no-rows"},
+    {"missing setting", "ERR_FORMAT", "missing-setting"},
+    {"is not a finite number", "ERR_FORMAT", "not-finite"},
+    {" fields, expected", "ERR_FORMAT", "field-count"},
+    {"cannot open", "ERR_IO", "cannot-open"},
+    {"cannot write", "ERR_IO", "cannot-write"},
+    {"too few measurements", "ERR_DEGENERATE", "too-few"},
+    {"at the same position", "ERR_DEGENERATE", "same-position"},
+    {"+1 g and -1 g swapped", "ERR_DEGENERATE", "swapped"},
+    {"one temperature only", "ERR_DEGENERATE", "one-temperature"},
+    {"degenerate data", "ERR_DEGENERATE", "degenerate"},
+    {"coefficient out of range", "ERR_RANGE", "coefficient-range"},
+    {"no binding", "ERR_INVAL", "no-binding"},
+    {"binding out of range", "ERR_RANGE", "binding-range"},
+    {"not a calibration record", "ERR_FORMAT", "not-a-record"},
+    {"calrec_decode refused", "ERR_CRC", "record-refused"},
+};
+
+int refuse(const std::string &msg, const char *fallback_code, const char *fallback_slug)
+{
+    const char *code = fallback_code, *slug = fallback_slug;
+    for (const Problem &p : kProblems) {
+        if (msg.find(p.needle) != std::string::npos) {
+            code = p.code;
+            slug = p.slug;
+            break;
+        }
+    }
+    // An inc_err name in the message ("(ERR_CRC)") is the code itself.
+    const size_t en = msg.find("(ERR_");
+    if (en != std::string::npos) {
+        const size_t close = msg.find(')', en);
+        if (close != std::string::npos) {
+            tool_summary_add("error", "%s", msg.substr(en + 1, close - en - 1).c_str());
+            code = nullptr;
+        }
+    }
+    if (code != nullptr) tool_summary_add("error", "%s", code);
+    tool_summary_add("problem", "%s", slug);
+    const size_t ln = msg.find("line ");
+    if (ln != std::string::npos) {
+        const long v = std::strtol(msg.c_str() + ln + 5, nullptr, 10);
+        if (v > 0) tool_summary_add("line", "%ld", v);
+    }
+    const size_t col = msg.find("column '");
+    if (col != std::string::npos) {
+        const size_t end = msg.find('\'', col + 8);
+        if (end != std::string::npos)
+            tool_summary_add("column", "%s", msg.substr(col + 8, end - col - 8).c_str());
+    }
+    const size_t co = msg.find("coefficient out of range: ");
+    if (co != std::string::npos) {
+        const size_t b = co + 26, end = msg.find(' ', b);
+        tool_summary_add("coefficient", "%s",
+                         msg.substr(b, end == std::string::npos ? end : end - b).c_str());
+    }
+    return 1;
 }
 
 bool parse_u64(const char *s, uint64_t &v)
@@ -121,9 +192,10 @@ int cmd_simulate(int argc, char **argv)
     const Station st = simulate_station(cfg);
     if (!write_file(out, format_station(st))) {
         std::fprintf(stderr, "calstation: cannot write '%s'\n", out.c_str());
-        return 1;
+        return refuse("cannot write", "ERR_IO", "cannot-write");
     }
     std::printf("wrote %s: %zu rows\n", out.c_str(), st.rows.size());
+    tool_summary_add("rows", "%zu", st.rows.size());
     return 0;
 }
 
@@ -152,13 +224,13 @@ int cmd_fit(int argc, char **argv)
     std::string e = read_station_file(in, st);
     if (!e.empty()) {
         std::fprintf(stderr, "calstation: %s\n", e.c_str());
-        return 1;
+        return refuse(e, "ERR_FORMAT", "input");
     }
     CalResult res;
     e = fit_station(st, opt, res);
     if (!e.empty()) {
         std::fprintf(stderr, "calstation: %s: %s\n", in.c_str(), e.c_str());
-        return 1;
+        return refuse(e, "ERR_DEGENERATE", "fit");
     }
     std::fputs(res.report.c_str(), stdout);
     struct calrec rec;
@@ -167,8 +239,12 @@ int cmd_fit(int argc, char **argv)
     if (e.empty()) e = firmware_check(st, rec, fw);
     if (!e.empty()) {
         std::fprintf(stderr, "calstation: %s: %s\n", in.c_str(), e.c_str());
-        return 1;
+        return refuse(e, "ERR_RANGE", "record");
     }
+    tool_summary_add("fw_rows", "%zu", fw.rows);
+    tool_summary_add("fw_max_lsb", "%.2f", fw.max_lsb);
+    tool_summary_add("fw_max_err_mg", "%.3f", fw.max_err_mg);
+    tool_summary_add("fw_max_tilt_err_mg", "%.3f", fw.max_tilt_err_mg);
     std::printf(
         "firmware check (fixed point, firmware/signal/cal, on the quantised record): %zu acc rows, "
         "max |firmware - double model| = %.2f LSB Q16; max |corrected - true| = %.3f mg "
@@ -179,12 +255,17 @@ int cmd_fit(int argc, char **argv)
         e = encode_record(rec, static_cast<uint32_t>(seq), img);
         if (!e.empty()) {
             std::fprintf(stderr, "calstation: %s\n", e.c_str());
-            return 1;
+            return refuse(e, "ERR_RANGE", "encode");
         }
         if (!write_file(out, std::string(img.begin(), img.end()))) {
             std::fprintf(stderr, "calstation: cannot write '%s'\n", out.c_str());
-            return 1;
+            return refuse("cannot write", "ERR_IO", "cannot-write");
         }
+        tool_summary_add("record_bytes", "%zu", img.size());
+        tool_summary_add("format", "%u", static_cast<unsigned>(CALREC_VERSION));
+        tool_summary_add("seq", "%u", static_cast<unsigned>(seq));
+        tool_summary_add("crc", "0x%08X",
+                         static_cast<unsigned>(calrec_get_le32(&img[CALREC_OFF_CRC])));
         std::printf("wrote %s: calibration record format %u, %zu bytes, seq %u, CRC-32 0x%08X\n",
                     out.c_str(), CALREC_VERSION, img.size(), static_cast<unsigned>(seq),
                     calrec_get_le32(&img[CALREC_OFF_CRC]));
@@ -198,13 +279,13 @@ int cmd_show(int argc, char **argv)
     std::ifstream f(argv[0], std::ios::binary);
     if (!f) {
         std::fprintf(stderr, "calstation: cannot open '%s'\n", argv[0]);
-        return 1;
+        return refuse("cannot open", "ERR_IO", "cannot-open");
     }
     std::vector<uint8_t> img((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
     if (img.size() < CALREC_OFF_BINDING + 24u) {
         std::fprintf(stderr, "calstation: %s: %zu bytes, not a calibration record\n", argv[0],
                      img.size());
-        return 1;
+        return refuse("not a calibration record", "ERR_FORMAT", "not-a-record");
     }
     // Decode against the binding the image itself carries: this shows what is inside; the
     // firmware decodes against the identity it reads from the part.
@@ -221,8 +302,15 @@ int cmd_show(int argc, char **argv)
     if (e != INC_OK) {
         std::fprintf(stderr, "calstation: %s: calrec_decode refused the image (%s)\n", argv[0],
                      inc_err_name(e));
+        tool_summary_add("error", "%s", inc_err_name(e));
+        tool_summary_add("problem", "record-refused");
         return 1;
     }
+    tool_summary_add("format", "%u",
+                     static_cast<unsigned>(calrec_get_le32(&img[CALREC_OFF_VERSION])));
+    tool_summary_add("seq", "%u", static_cast<unsigned>(seq));
+    tool_summary_add("family", "%u", static_cast<unsigned>(b.family));
+    tool_summary_add("product", "%u", static_cast<unsigned>(b.product));
     const CalResult c = from_calrec(r);
     static const char *const ax[3] = {"x", "y", "z"};
     std::printf(
@@ -289,22 +377,32 @@ int cmd_compare(int argc, char **argv)
         const std::string e = compare_part(p, cfg, rows);
         if (!e.empty()) {
             std::fprintf(stderr, "calstation: compare: %s\n", e.c_str());
-            return 1;
+            return refuse(e, "ERR_DEGENERATE", "compare");
         }
     }
     std::fputs(format_compare(rows).c_str(), stdout);
+    tool_summary_add("parts", "%zu", parts.size());
+    tool_summary_add("rows", "%zu", rows.size());
     return 0;
+}
+
+int run(int argc, char **argv)
+{
+    if (argc < 2) return usage();
+    const std::string cmd = argv[1];
+    tool_summary_add("command", "%s", cmd.c_str());
+    if (cmd == "simulate") return cmd_simulate(argc - 2, argv + 2);
+    if (cmd == "fit") return cmd_fit(argc - 2, argv + 2);
+    if (cmd == "compare") return cmd_compare(argc - 2, argv + 2);
+    if (cmd == "show") return cmd_show(argc - 2, argv + 2);
+    return usage();
 }
 
 } // namespace
 
 int main(int argc, char **argv)
 {
-    if (argc < 2) return usage();
-    const std::string cmd = argv[1];
-    if (cmd == "simulate") return cmd_simulate(argc - 2, argv + 2);
-    if (cmd == "fit") return cmd_fit(argc - 2, argv + 2);
-    if (cmd == "compare") return cmd_compare(argc - 2, argv + 2);
-    if (cmd == "show") return cmd_show(argc - 2, argv + 2);
-    return usage();
+    tool_summary_begin("calstation");
+    const int status = run(argc, argv);
+    return tool_summary_end(status == 0 ? "ok" : "error", status);
 }

@@ -4,7 +4,7 @@
 //  1. End of line: the station turns the part through its six faces (25 degC, then optionally a
 //     hot and a cold soak) and, at 25 degC, through a tilt sweep of each axis within +-30 deg;
 //     the firmware averages each position and computes offset, gain and gyro offset on the
-//     device; the station adds the cross-axis matrix, the nonlinearity cubics and seed 000's
+//     device; the station adds the cross-axis matrix, the nonlinearity cubics and [ADI-EPB]'s
 //     three-point temperature models; the firmware stores the record in the simulated flash
 //     (calstore).
 //  2. The part goes into a car parked on a slope, engine idling.
@@ -16,6 +16,7 @@
 // otherwise; 2 for bad arguments or a set-up failure.
 extern "C" {
 #include "inclino/error.h"
+#include "inclino/tool_summary.h"
 }
 #include "station.hpp"
 
@@ -37,7 +38,7 @@ namespace
 
 constexpr double kQ16 = 65536.0, kQ30 = 1073741824.0;
 constexpr double kPi = 3.14159265358979323846;
-// The tilt sweep: every 7.5 deg from -30 to +30 deg (seed 000's road slopes) on each axis.
+// The tilt sweep: every 7.5 deg from -30 to +30 deg ([ADI-EPB]'s road slopes) on each axis.
 constexpr int kSweepSteps = 4;
 constexpr double kSweepStepDeg = 7.5;
 
@@ -75,13 +76,13 @@ void usage()
         "  --temp C            temperature of the parked car, degC (default 25)\n"
         "  --part NAME         adis16405 (default), adis16400, adis16364, adis16362, sca3000-d01,\n"
         "                      sca3000-e02\n"
-        "  --part-seed N       errors of a part drawn from seed N (default 0: part A, seed 000/002)\n"
+        "  --part-seed N       errors of a part drawn from seed N (default 0: part A, [ADI-EPB]/[TEMP-LORENTZ])\n"
         "  --seed N            noise and vibration seed (default 1)\n"
         "  --length S          parked scenario length, s (default 7.5: three 2.5 s estimates)\n"
         "  --block-s S         samples averaged per estimate, s (default 2.5; whole stillness windows)\n"
         "  --face-s S          end of line: seconds averaged per face (default 1)\n"
         "  --no-tcal           end of line at 25 degC only (no three-point temperature step)\n"
-        "  --no-sweep          no tilt sweep: the nonlinearity stays uncorrected (seed 000's way)\n"
+        "  --no-sweep          no tilt sweep: the nonlinearity stays uncorrected ([ADI-EPB]'s way)\n"
         "  --tcal-temps C,H    cold and hot soak temperatures (default -20,60)\n"
         "  --no-eol            skip the end of line: the flash stays empty (not calibrated)\n"
         "  --no-engine         engine off;  --no-bumps  no random bumps\n"
@@ -244,15 +245,17 @@ const char *cal_status_text(int st)
 int main(int argc, char **argv)
 {
     Options o;
+    tool_summary_begin("epb_demo");
     if (!parse(argc, argv, o)) {
         usage();
-        return 2;
+        return tool_summary_error("usage", 2);
     }
     enum epb_rig_part part;
     if (epb_rig_part_from_name(o.part.c_str(), &part) != INC_OK) {
         std::fprintf(stderr, "epb_demo: unknown part '%s'\n", o.part.c_str());
+        tool_summary_add("part", "%s", o.part.c_str());
         usage();
-        return 2;
+        return tool_summary_error("unknown-part", 2);
     }
     const auto wall0 = std::chrono::steady_clock::now();
     struct epb_rig *const rig = epb_rig_instance();
@@ -264,9 +267,11 @@ int main(int argc, char **argv)
     int err = epb_rig_init(rig, part, &type, o.seed);
     if (err != INC_OK) {
         std::fprintf(stderr, "epb_demo: rig set-up failed (%s)\n", inc_err_name(err));
-        return 2;
+        return tool_summary_error(inc_err_name(err), 2);
     }
     const epb_rig_part_info *pi = epb_rig_info(rig);
+    tool_summary_add("part", "%s", pi->name);
+    tool_summary_add("eol", "%d", o.eol ? 1 : 0);
     struct app_cfg cfg;
     app_cfg_default(&cfg, epb_rig_rate_mhz(rig));
     if (o.block_s > 0.0) {
@@ -279,16 +284,18 @@ int main(int argc, char **argv)
     std::printf(
         "Inclino EPB demo: %s (pin-level model, %.1f SPS, accel LSB %.3f mg), errors of %s, seed %llu\n",
         pi->name, pi->rate_sps, pi->acc_lsb_g * 1e3,
-        o.part_seed == 0 ? "part A (seed 000/002)" : "a seeded part", (unsigned long long)o.seed);
+        o.part_seed == 0 ? "part A ([ADI-EPB]/[TEMP-LORENTZ])" : "a seeded part",
+        (unsigned long long)o.seed);
     if (o.part_seed != 0) std::printf("  part seed %llu\n", (unsigned long long)o.part_seed);
 
     // ---- 1. End of line ------------------------------------------------------------------
     err = epb_rig_power_up(rig, &cfg);
     if (err != INC_OK) {
         std::fprintf(stderr, "epb_demo: firmware start failed (%s)\n", inc_err_name(err));
-        return 2;
+        return tool_summary_error(inc_err_name(err), 2);
     }
     epb::StationOut st;
+    size_t sweep_points = 0;
     if (o.eol) {
         std::printf(
             "\nEnd of line: six faces per soak%s, %u samples each (%.1f s), firmware on-device flip\n",
@@ -312,7 +319,7 @@ int main(int argc, char **argv)
                 if (err != INC_OK) {
                     std::fprintf(stderr, "epb_demo: face %d at %.1f degC failed (%s)\n", f, t,
                                  inc_err_name(err));
-                    return 2;
+                    return tool_summary_error(inc_err_name(err), 2);
                 }
             }
             if (pi->temp_lsb_c > 0.0) { // the part's own reading, as the firmware will see it
@@ -336,7 +343,7 @@ int main(int argc, char **argv)
                             std::fprintf(stderr,
                                          "epb_demo: sweep point %d of axis %d failed (%s)\n", step,
                                          a, inc_err_name(err));
-                            return 2;
+                            return tool_summary_error(inc_err_name(err), 2);
                         }
                         s.sweep.push_back(sp);
                     }
@@ -347,7 +354,7 @@ int main(int argc, char **argv)
             if (err != INC_OK) {
                 std::fprintf(stderr, "epb_demo: six-position at %.1f degC failed (%s)\n", t,
                              inc_err_name(err));
-                return 2;
+                return tool_summary_error(inc_err_name(err), 2);
             }
             std::printf(
                 "  %6.1f degC (part reads %6.2f)  offset [mg] %+8.3f %+8.3f %+8.3f   gain %.5f %.5f %.5f",
@@ -359,12 +366,13 @@ int main(int argc, char **argv)
                             q16(s.six.gyro_offset[1]), q16(s.six.gyro_offset[2]));
             }
             std::printf("\n");
+            if (soaks.empty()) sweep_points = s.sweep.size();
             soaks.push_back(s);
         }
         const std::string serr = epb::station_record(soaks, epb_rig_app(rig)->id, st);
         if (!serr.empty()) {
             std::fprintf(stderr, "epb_demo: station: %s\n", serr.c_str());
-            return 2;
+            return tool_summary_error("station", 2);
         }
         std::printf(
             "  station: cross-axis matrix from the 25 degC faces (off-diagonal up to %.2f mrad)",
@@ -382,14 +390,14 @@ int main(int argc, char **argv)
         }
         if (st.tcal)
             std::printf(
-                ";\n           seed 000 three-point models of offset and gain (%.2f/%.2f/%.2f degC as read)",
+                ";\n           [ADI-EPB] three-point models of offset and gain (%.2f/%.2f/%.2f degC as read)",
                 st.t_cold, st.t_amb, st.t_hot);
         std::printf("\n");
         calstore_info info;
         err = app_eol_save(epb_rig_app(rig), &st.rec, epb_rig_store(rig), &info);
         if (err != INC_OK) {
             std::fprintf(stderr, "epb_demo: calstore_save failed (%s)\n", inc_err_name(err));
-            return 2;
+            return tool_summary_error(inc_err_name(err), 2);
         }
         std::printf(
             "  record: %u bytes, sequence %u, saved by calstore to slot %d of the simulated flash, bound to "
@@ -402,7 +410,7 @@ int main(int argc, char **argv)
             if (f == nullptr || calrec_encode(&st.rec, info.seq, img, sizeof img) != INC_OK ||
                 std::fwrite(img, 1, sizeof img, f) != sizeof img || std::fclose(f) != 0) {
                 std::fprintf(stderr, "epb_demo: cannot write %s\n", o.record_out.c_str());
-                return 2;
+                return tool_summary_error("io", 2);
             }
         }
     } else {
@@ -442,17 +450,19 @@ int main(int argc, char **argv)
     if (err != INC_OK) {
         std::fprintf(stderr, "epb_demo: firmware start after the power cycle failed (%s)\n",
                      inc_err_name(err));
-        return 2;
+        return tool_summary_error(inc_err_name(err), 2);
     }
     std::printf("\nPower cycle: fresh application instance, calibration %s\n",
                 cal_status_text(epb_rig_app(rig)->cal_status));
+    tool_summary_add("calibration", "%s", inc_err_name(epb_rig_app(rig)->cal_status));
+    tool_summary_add("calibrated", "%d", app_calibrated(epb_rig_app(rig)) ? 1 : 0);
 
     FILE *csv = nullptr, *est = nullptr;
     if (!o.csv.empty()) {
         csv = std::fopen(o.csv.c_str(), "w");
         if (csv == nullptr) {
             std::fprintf(stderr, "epb_demo: cannot write %s\n", o.csv.c_str());
-            return 2;
+            return tool_summary_error("io", 2);
         }
         std::fprintf(
             csv,
@@ -466,7 +476,7 @@ int main(int argc, char **argv)
         est = std::fopen(o.est_csv.c_str(), "w");
         if (est == nullptr) {
             std::fprintf(stderr, "epb_demo: cannot write %s\n", o.est_csv.c_str());
-            return 2;
+            return tool_summary_error("io", 2);
         }
         std::fprintf(
             est,
@@ -479,7 +489,7 @@ int main(int argc, char **argv)
     if (!o.vcd.empty()) {
         if (epb_rig_vcd_open(rig, &vcd, o.vcd.c_str()) != INC_OK) {
             std::fprintf(stderr, "epb_demo: cannot write %s\n", o.vcd.c_str());
-            return 2;
+            return tool_summary_error("io", 2);
         }
         vcd_open = true;
     }
@@ -503,7 +513,7 @@ int main(int argc, char **argv)
         err = app_step(epb_rig_app(rig), &s, rerr, &c, &done, &r);
         if (err != INC_OK) {
             std::fprintf(stderr, "epb_demo: app_step failed (%s)\n", inc_err_name(err));
-            return 2;
+            return tool_summary_error(inc_err_name(err), 2);
         }
         if (rerr == INC_OK && csv != nullptr) {
             std::fprintf(csv, "%.9f,%.7f,%.7f,%.7f,%.7f,%.7f,%.7f", s.t_ns * 1e-9,
@@ -519,7 +529,7 @@ int main(int argc, char **argv)
         if (reads > 4u * blocks * cfg.avg_n + 100u) {
             std::fprintf(stderr, "epb_demo: the sensor does not deliver samples (last error %s)\n",
                          inc_err_name(rerr));
-            return 2;
+            return tool_summary_error("no-samples", 2);
         }
         if (!done) continue;
         results.push_back(r);
@@ -550,30 +560,30 @@ int main(int argc, char **argv)
     if (vcd_open) sim_vcd_close(&vcd);
     if (csv != nullptr && std::fclose(csv) != 0) {
         std::fprintf(stderr, "epb_demo: write error %s\n", o.csv.c_str());
-        return 2;
+        return tool_summary_error("io", 2);
     }
     if (est != nullptr && std::fclose(est) != 0) {
         std::fprintf(stderr, "epb_demo: write error %s\n", o.est_csv.c_str());
-        return 2;
+        return tool_summary_error("io", 2);
     }
 
     // ---- Report ------------------------------------------------------------------------------
     const app_result &r = results.back();
     const slope_budget &b = r.budget;
     std::printf(
-        "\nError budget of the last estimate (seed 000 Table 1, worst case per axis; e_a on the slope axis):\n");
+        "\nError budget of the last estimate ([ADI-EPB] Table 1, worst case per axis; e_a on the slope axis):\n");
     const double sens_g = std::fabs(q16(r.accel_g[cfg.slope.slope_axis])) * b.sensitivity / kQ30;
     std::printf("  %-13s %8.3f mg  (%.4f %% of |A| = %.4f g)  %s\n", "sensitivity", sens_g * 1e3,
                 b.sensitivity / kQ30 * 100.0, std::fabs(q16(r.accel_g[cfg.slope.slope_axis])),
                 app_calibrated(epb_rig_app(rig)) ? bud.terms[0].origin.c_str()
-                                                 : "uncalibrated: seed 000 before calibration");
+                                                 : "uncalibrated: [ADI-EPB] before calibration");
     std::printf("  %-13s %8.3f mg  %s\n", "offset", q16(b.offset_g) * 1e3,
                 app_calibrated(epb_rig_app(rig)) ? bud.terms[1].origin.c_str()
-                                                 : "uncalibrated: seed 000 before calibration");
+                                                 : "uncalibrated: [ADI-EPB] before calibration");
     std::printf("  %-13s %8.3f mg  %s\n", "nonlinearity", q16(b.nonlinearity_g) * 1e3,
                 bud.terms[2].origin.c_str());
     std::printf("  %-13s %8.3f mg  %s\n", "temperature", q16(b.temperature_g) * 1e3,
-                (r.flags & APP_F_TEMP_UNCOMP) ? "not compensated here: seed 000's 50 mg"
+                (r.flags & APP_F_TEMP_UNCOMP) ? "not compensated here: [ADI-EPB]'s 50 mg"
                                               : bud.terms[3].origin.c_str());
     std::printf(
         "  %-13s %8.3f mg  k %.2f x sigma %.3f mg / sqrt(%u); sigma = max(rated %.3f, measured %.3f) mg\n",
@@ -604,5 +614,31 @@ int main(int argc, char **argv)
     epb_rig_print_violations(rig, stdout);
     const bool pass = r.valid && inside && viol == 0u && all_valid_inside;
     std::printf("%s\n", pass ? "PASS" : "FAIL");
-    return pass ? 0 : 1;
+    const std::string sfl = slope_flag_names(r.slope.flags), afl = app_flag_names(r.flags);
+    tool_summary_add("sweep_points", "%zu", sweep_points);
+    tool_summary_add("nonlinearity", "%s", st.nonlin ? "corrected" : "uncorrected");
+    tool_summary_add("tcal", "%d", st.tcal ? 1 : 0);
+    tool_summary_add("estimates", "%zu", results.size());
+    tool_summary_add("slope_deg", "%.4f", q16(r.slope.slope_deg));
+    tool_summary_add("grade_pct", "%.3f", q16(r.slope.grade_pct));
+    tool_summary_add("bound_deg", "%.4f", q16(r.slope.bound_deg));
+    tool_summary_add("bound_pct", "%.3f", q16(r.slope.bound_pct));
+    tool_summary_add("true_deg", "%.4f", true_deg);
+    tool_summary_add("true_pct", "%.3f", true_pct);
+    tool_summary_add("error_deg", "%+.4f", e);
+    tool_summary_add("valid", "%d", r.valid ? 1 : 0);
+    tool_summary_add("inside", "%d", inside ? 1 : 0);
+    tool_summary_add("all_valid_inside", "%d", all_valid_inside ? 1 : 0);
+    tool_summary_add("slope_flags", "%s", sfl.empty() ? "none" : sfl.c_str());
+    tool_summary_add("app_flags", "%s", afl.empty() ? "none" : afl.c_str());
+    tool_summary_add("budget_sensitivity_mg", "%.3f", sens_g * 1e3);
+    tool_summary_add("budget_offset_mg", "%.3f", q16(b.offset_g) * 1e3);
+    tool_summary_add("budget_nonlinearity_mg", "%.3f", q16(b.nonlinearity_g) * 1e3);
+    tool_summary_add("budget_temperature_mg", "%.3f", q16(b.temperature_g) * 1e3);
+    tool_summary_add("budget_noise_mg", "%.3f", q16(r.slope.noise_g) * 1e3);
+    tool_summary_add("accel_bound_mg", "%.3f", q16(r.slope.accel_bound_g) * 1e3);
+    tool_summary_add("violations", "%u", viol);
+    tool_summary_add("reads", "%u", reads);
+    tool_summary_add("verdict", "%s", pass ? "PASS" : "FAIL");
+    return tool_summary_end(pass ? "ok" : "fail", pass ? 0 : 1);
 }

@@ -23,7 +23,7 @@ namespace
 constexpr double kQ16 = 65536.0, kQ30 = 1073741824.0;
 constexpr double kPi = 3.14159265358979323846;
 
-// Seed 000, Table 1 (mg, relative): what the budget falls back on where nothing is corrected.
+// [ADI-EPB], Table 1 (mg, relative): what the budget falls back on where nothing is corrected.
 constexpr double kSeedNonlin = 0.010;
 constexpr double kSeedTempUncomp = 0.050;
 constexpr double kSeedSensUncal = 0.03;
@@ -127,7 +127,7 @@ std::string station_record(const std::vector<Soak> &soaks, const calrec_binding 
     out.tcal = soaks.size() >= 3;
     out.t_amb = amb.temp_c;
     if (out.tcal) {
-        // Seed 000's three-point procedure on the on-device flip results: offset(T) and
+        // [ADI-EPB]'s three-point procedure on the on-device flip results: offset(T) and
         // gain(T), as deviations from the ambient values the record holds.
         out.t_cold = out.t_hot = amb.temp_c;
         for (int a = 0; a < 3; a++) {
@@ -295,7 +295,7 @@ Budget derive_budget(const sim_calpart_params &type, const StationOut &st, doubl
             max_slope_deg, nl * 1e3);
     } else {
         std::snprintf(buf, sizeof buf,
-                      "not corrected: max(seed 000 10 mg, part type %.2f mg within +-%.0f deg)",
+                      "not corrected: max([ADI-EPB] 10 mg, part type %.2f mg within +-%.0f deg)",
                       nl * 1e3, max_slope_deg);
     }
     out.terms.push_back({"nonlinearity", nonlin, buf});
@@ -305,7 +305,7 @@ Budget derive_budget(const sim_calpart_params &type, const StationOut &st, doubl
                       "both hysteresis branches",
                       st.t_cold, st.t_hot, margin);
     } else {
-        std::snprintf(buf, sizeof buf, "no temperature model: seed 000's 50 mg");
+        std::snprintf(buf, sizeof buf, "no temperature model: [ADI-EPB]'s 50 mg");
     }
     out.terms.push_back({"temperature", tcomp, buf});
     std::snprintf(buf, sizeof buf, "rated per sample: sqrt(%.2f mg element^2 + LSB^2/12), k = %.2f",

@@ -1,8 +1,8 @@
 // station.hpp - the host side of the EPB demo's end-of-line station (docs/epb-demo.md):
 //  - the cross-axis (misalignment) matrix from the six faces the firmware averaged;
 //  - the nonlinearity of each element: a cubic fitted to the faces and a tilt sweep within
-//    +-30 deg (docs/calibration.md), which seed 000 leaves uncorrected;
-//  - seed 000's three-point temperature models of offset and gain (calstation's
+//    +-30 deg (docs/calibration.md), which [ADI-EPB] leaves uncorrected;
+//  - [ADI-EPB]'s three-point temperature models of offset and gain (calstation's
 //    fit_three_point) from the on-device six-position results at the cold, ambient and hot soaks;
 //  - the record, quantised with calstation's to_calrec (the on-device offsets, gains and gyro
 //    offsets kept bit for bit);
@@ -89,11 +89,11 @@ struct Budget {
 //                type (its element cubic seen through the flip line, then the record's cubic)
 //                + k sigma_fit, sigma_fit the fitted curve's standard deviation there (the
 //                points' noise sigma sqrt(2 / N_face): reading and target); without it:
-//                max(seed 000's 10 mg, the part type's largest flip-line deviation);
+//                max([ADI-EPB]'s 10 mg, the part type's largest flip-line deviation);
 //   temperature  with the models: their largest offset residual against the part type's curves
-//                over the calibrated range, both hysteresis branches; without: seed 000's 50 mg;
+//                over the calibrated range, both hysteresis branches; without: [ADI-EPB]'s 50 mg;
 //   noise        sigma of one output sample = sqrt(element noise^2 + LSB^2 / 12);
-//   uncalibrated max(seed 000's 3 % / 15 mg, the part type's own at 25 degC).
+//   uncalibrated max([ADI-EPB]'s 3 % / 15 mg, the part type's own at 25 degC).
 // k_sigma from the application's lifetime rule (slope_sigma_factor(runs, E)).
 // The temperature residual is evaluated over the calibrated range widened by the application's
 // margin (temp_margin_c), with the part's reading off the truth by up to half a temperature LSB.

@@ -13,6 +13,7 @@
 #include "inclino/sim/loopback.h"
 #include "inclino/sim/vcd.h"
 #include "inclino/spi.h"
+#include "inclino/tool_summary.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -24,7 +25,7 @@ static int usage(void)
 {
     fprintf(stderr, "usage: spi_demo [--vcd FILE] [--mode 0..3] [--bits 8|16] [--sclk-hz HZ]\n"
                     "                [--stall-ns NS] [--hold] [HEXWORD ...]\n");
-    return 2;
+    return tool_summary_error("usage", 2);
 }
 
 static int parse_ul(const char *s, unsigned long max, int base, unsigned long *out)
@@ -57,6 +58,7 @@ int main(int argc, char **argv)
     enum spi_cs_policy cs = SPI_CS_TOGGLE;
     uint64_t t0, t1;
     int a, err, bad = 0;
+    tool_summary_begin("spi_demo");
 
     for (a = 1; a < argc; a++) {
         const char *arg = argv[a];
@@ -96,7 +98,7 @@ int main(int argc, char **argv)
 
     if (sim_board_init(&board) != 0) {
         fprintf(stderr, "board init failed\n");
-        return 1;
+        return tool_summary_error("board-init", 1);
     }
     memset(&lc, 0, sizeof(lc));
     lc.name = "loopback";
@@ -131,11 +133,11 @@ int main(int argc, char **argv)
     }
     if (err != 0) {
         fprintf(stderr, "setup failed: %s\n", inc_err_name(err));
-        return 1;
+        return tool_summary_error(inc_err_name(err), 1);
     }
     if (vcd_path != NULL && sim_vcd_open(&vcd, vcd_path, &board.bus, SIM_BOARD_SPI_MASK) != 0) {
         fprintf(stderr, "cannot write %s\n", vcd_path);
-        return 1;
+        return tool_summary_error(inc_err_name(INC_ERR_IO), 1);
     }
     hal_delay_ns(&board.hal, 1000); /* a quiet start in the waveform */
     t0 = hal_now_ns(&board.hal);
@@ -148,7 +150,7 @@ int main(int argc, char **argv)
     }
     if (err != 0) {
         fprintf(stderr, "transfer failed: %s\n", inc_err_name(err));
-        return 1;
+        return tool_summary_error(inc_err_name(err), 1);
     }
 
     printf("Inclino simulated SPI transfer: mode %lu, %lu-bit frames, SCLK %lu Hz (period %lu ns), "
@@ -175,5 +177,21 @@ int main(int argc, char **argv)
                "clk=sclk mosi=mosi miso=miso cs=cs0 cpol=%lu cpha=%lu)\n",
                vcd_path, (unsigned long long)vcd.changes, mode >> 1, mode & 1);
     }
-    return bad;
+    {
+        size_t wrong = 0;
+        for (i = 0; i < n; i++) {
+            if (rx[i] != (i == 0 ? lc.first : tx[i - 1])) wrong++;
+        }
+        tool_summary_add("mode", "%lu", mode);
+        tool_summary_add("bits", "%lu", bits);
+        tool_summary_add("sclk_hz", "%lu", hz);
+        tool_summary_add("cs", "%s", cs == SPI_CS_HOLD ? "held" : "toggled");
+        tool_summary_add("frames", "%zu", n);
+        tool_summary_add("wrong", "%zu", wrong);
+        tool_summary_add("bus_ns", "%llu", (unsigned long long)(t1 - t0));
+        tool_summary_add("violations", "%u", board.log.total);
+        if (vcd_path != NULL)
+            tool_summary_add("vcd_changes", "%llu", (unsigned long long)vcd.changes);
+    }
+    return tool_summary_end(bad ? "fail" : "ok", bad);
 }

@@ -7,8 +7,11 @@
  *
  * Defaults: wires sclk/mosi/miso/cs0, mode 3, 16-bit, cs pin 3 (the simulated board's cs0).
  * See docs/traces.md. Exit status 0, 1 on a conversion error (message on stderr), 2 on usage.
+ * The last line on stdout is the summary (docs/tool-summary.md): frames=<CS periods> or
+ * error=<inc_err name | usage>.
  */
 #include "inclino/sim/trace.h"
+#include "inclino/tool_summary.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -21,6 +24,7 @@ int main(int argc, char **argv)
     char msg[200] = "";
     FILE *fi, *fo;
     int a, n;
+    tool_summary_begin("vcd2trace");
     for (a = 1; a < argc; a++) {
         const char *v = a + 1 < argc ? argv[a + 1] : NULL;
         if (strcmp(argv[a], "--sclk") == 0 && v) {
@@ -59,18 +63,18 @@ int main(int argc, char **argv)
     if (in == NULL || outp == NULL) {
         fprintf(stderr, "usage: vcd2trace [--sclk N] [--mosi N] [--miso N] [--cs N] [--mode 0..3] "
                         "[--bits 8|16] [--cs-pin N] IN.vcd OUT.trace\n");
-        return 2;
+        return tool_summary_error("usage", 2);
     }
     fi = fopen(in, "r");
     if (fi == NULL) {
         fprintf(stderr, "vcd2trace: cannot read %s\n", in);
-        return 1;
+        return tool_summary_error(inc_err_name(INC_ERR_IO), 1);
     }
     fo = fopen(outp, "w");
     if (fo == NULL) {
         fclose(fi);
         fprintf(stderr, "vcd2trace: cannot write %s\n", outp);
-        return 1;
+        return tool_summary_error(inc_err_name(INC_ERR_IO), 1);
     }
     n = trace_from_vcd(fi, fo, &o, msg, sizeof(msg));
     fclose(fi);
@@ -80,8 +84,11 @@ int main(int argc, char **argv)
     if (n < 0) {
         fprintf(stderr, "vcd2trace: %s (%s)\n", msg[0] ? msg : "conversion failed",
                 inc_err_name(n));
-        return 1;
+        return tool_summary_error(inc_err_name(n), 1);
     }
     printf("%d CS periods written to %s\n", n, outp);
-    return 0;
+    tool_summary_add("frames", "%d", n);
+    tool_summary_add("mode", "%u", o.mode);
+    tool_summary_add("bits", "%u", o.bits);
+    return tool_summary_end("ok", 0);
 }

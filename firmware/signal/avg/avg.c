@@ -1,8 +1,8 @@
 /*
  * avg.c - averaging and decimation filters (see inclino/avg.h).
  *
- * Why exact sums and one rounding: seed 000 ("noise") averages to cut rms noise by sqrt(n), and
- * seed 003's manual calibration averages 82 000 gyro samples; a filter that rounded at every
+ * Why exact sums and one rounding: [ADI-EPB] ("noise") averages to cut rms noise by sqrt(n), and
+ * [ADI-IMU-QS]'s manual calibration averages 82 000 gyro samples; a filter that rounded at every
  * stage would add up to 0.5 LSB per stage of bias-free but correlated error, which at the 1/320
  * deg/s level of the processor-side correction is not negligible. Integer sums are exact, so a
  * running (add new, subtract old) sum never drifts, and the only error left is the final

@@ -100,7 +100,7 @@ int cal_acc_apply(const struct cal_acc *st, const fx_q16_t in[3], fx_q16_t out[3
         fx_q16_t v, x;
         int32_t h;
         range = range || in[i] > CAL_ACC_IN_MAX || in[i] < -CAL_ACC_IN_MAX;
-        /* Seed 000: a_true = (a_out - offset) / gain, with the temperature-corrected terms. */
+        /* [ADI-EPB]: a_true = (a_out - offset) / gain, with the temperature-corrected terms. */
         v = fx_mul_q16_q30(fx_sub(in[i], st->off[i]), st->inv_gain[i]);
         /* Cubic in Q30 (c in Q30, x in Q16 g): ((c3 x + c2) x + c1) x + c0; every partial sum
          * stays below 1.03 for |x| <= 1.25 g and coefficients within the record limits. */

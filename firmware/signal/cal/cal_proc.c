@@ -1,12 +1,12 @@
 /*
  * cal_proc.c - the on-device calibration procedures (see inclino/cal.h).
  *
- * Seed 000 ("tilt accuracy with accelerometers", ADI): one-point 0 g offset; +-1 g flip with
- * offset = (A+ + A-)/2 and gain = (A+ - A-)/2. The seed prints the gain as 0.5 * (A+ - A-)/2;
+ * [ADI-EPB] ("tilt accuracy with accelerometers", ADI): one-point 0 g offset; +-1 g flip with
+ * offset = (A+ + A-)/2 and gain = (A+ - A-)/2. The article prints the gain as 0.5 * (A+ - A-)/2;
  * with A+ = +1 g and A- = -1 g that gives 0.5 for a perfect part, so a_true = a_out / gain would
- * read double: the 0.5 is a misprint (reference/seed-notes.md, 000). Six-position = one flip per
+ * read double: the 0.5 is a misprint (docs/references.md, [ADI-EPB]). Six-position = one flip per
  * axis, with a check that each face is the one claimed. The gyro offset comes from a still
- * interval and the scale from a turn of a known angle (seed 003 does the same with its autonull
+ * interval and the scale from a turn of a known angle ([ADI-IMU-QS] does the same with its autonull
  * and manual calibration).
  */
 #include "inclino/cal.h"

@@ -1,7 +1,7 @@
 /*
  * cal_tmodel.c - evaluation of the record's temperature models (see inclino/cal.h, calrec.h).
  *
- * The models come from the calibration station (seed 000's three-point parabola, seed 002's
+ * The models come from the calibration station ([ADI-EPB]'s three-point parabola, [TEMP-LORENTZ]'s
  * linear and Lorentz fits, a knot table, Lorentz + cubic). Here they are only evaluated, once per
  * temperature change. Why it is written this way:
  *  - The polynomial argument u = (Th - t_ref) / t_span is Q30 with |u| <= 1 (T held in the
@@ -101,7 +101,7 @@ int cal_tmodel_eval(const struct calrec_tmodel *m, fx_q16_t t_c, int32_t *y)
         if (!poly_fields_ok(m)) {
             return INC_ERR_INVAL;
         }
-        /* Seed 000's a t^2 + b t + c in the normalised argument, Horner: p0 + u (p1 + u p2). */
+        /* [ADI-EPB]'s a t^2 + b t + c in the normalised argument, Horner: p0 + u (p1 + u p2). */
         u = norm_u(t, m->t_ref, m->t_span, &th);
         h = mac_q30(m->p[1], m->p[2], u);
         *y = mac_q30(m->p[0], h, u);

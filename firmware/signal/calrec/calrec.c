@@ -10,7 +10,7 @@
  * Why the range checks are strict (unused words must be 0, kinds must be known): a record with a
  * valid CRC can still come from a buggy or newer tool; anything this firmware cannot interpret
  * exactly is refused rather than half-used. Limits are sanity bounds far outside what a working
- * part produces (seed 000 budget: 15 mg initial offset, 30 mg/g sensitivity error, 50 mg drift)
+ * part produces ([ADI-EPB] budget: 15 mg initial offset, 30 mg/g sensitivity error, 50 mg drift)
  * and far inside what would make the fixed-point stages overflow.
  */
 #include "inclino/calrec.h"
@@ -111,14 +111,14 @@ int calrec_check_binding(const struct calrec_binding *b)
     }
     switch (b->family) {
     case CALREC_FAMILY_SCA3000:
-        /* No serial or lot registers on the SCA3000 (sensors.md 1.3). */
+        /* No serial or lot registers on the SCA3000 (docs/sensor-facts.md §1.3). */
         if (b->serial != 0u || b->lot_id1 != 0u || b->lot_id2 != 0u) {
             return INC_ERR_INVAL;
         }
         return INC_OK;
     case CALREC_FAMILY_ADIS1625X:
     case CALREC_FAMILY_ADIS163XX:
-        /* REVID is an SCA3000 register; the ADIS parts identify by PROD_ID (sensors.md 3.5). */
+        /* REVID is an SCA3000 register; the ADIS parts identify by PROD_ID (docs/sensor-facts.md §3.5). */
         if (b->revision != 0u) {
             return INC_ERR_INVAL;
         }

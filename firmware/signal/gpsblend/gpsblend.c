@@ -1,4 +1,4 @@
-/* gpsblend.c - speed across GPS gaps (see gpsblend.h; seed 001). */
+/* gpsblend.c - speed across GPS gaps (see gpsblend.h; [KF-SCA3000]). */
 #include "inclino/gpsblend.h"
 
 #include <stddef.h>

@@ -1,7 +1,7 @@
 /*
  * kf.c - the small fixed-point Kalman filter (see inclino/kf.h and docs/kalman.md).
  *
- * Seed 001 gives the five equations; this file keeps their order. Choices and why:
+ * [KF-SCA3000] gives the five equations; this file keeps their order. Choices and why:
  *  - Covariances are int64 with 48 fractional bits for Q16 states (P format, kf.h): the angle and
  *    gyro-bias covariances of an 819.2 Hz filter span ~16 decades. Every product goes through an
  *    exact 128-bit intermediate (fx128) and is rounded once, ties away from zero.

@@ -1,16 +1,16 @@
 /*
- * kf_adapt.c - the adaptive per-axis Kalman filter of seed 004 steps 1 to 3 (see
+ * kf_adapt.c - the adaptive per-axis Kalman filter of [CN110567483] steps 1 to 3 (see
  * inclino/kf_adapt.h and docs/kalman.md).
  *
  * Why it works: dz measures how far the newest sample stands from the recent ones. On a still
  * axis it is noise-sized, Q stays near C and the gain K settles small (heavy smoothing). When the
  * signal moves (a tilt step), |dz| jumps, Q and so P- grow, K approaches 1 and the estimate
  * follows within a few samples; R = |A + B Q| lets the measurement noise follow Q as well (B < 0
- * trusts the measurement more while the signal moves). The seed leaves the constants open;
+ * trusts the measurement more while the signal moves). The patent leaves the constants open;
  * docs/kalman.md gives the tuning procedure.
  *
  * Fixed point: the same formats as the generic filter (kf.h: P format raw^2 * 2^16, estimate with
- * 16 extra bits). The scalar step is the seed's P = (1 - K) P-, not Joseph: with one state and
+ * 16 extra bits). The scalar step is the patent's P = (1 - K) P-, not Joseph: with one state and
  * 0 <= K <= 1 (guaranteed by K = P- / (P- + R) with P-, R >= 0 and by the rounding, which cannot
  * leave [0, 2^30]) it cannot lose positivity, and it is one product cheaper.
  */

@@ -9,7 +9,7 @@
  * and the deviations of a still part are small, so d^2 and W sum d^2 stay inside 64 bits for any
  * int32 input (raw counts or Q16.16), which a plain sum of x^2 would not.
  * Why the mean and norm tests: a part turning at a constant rate, or accelerating steadily, has
- * no variance at all (seed 003 asks for "zero rotation", not for "constant rotation").
+ * no variance at all ([ADI-IMU-QS] asks for "zero rotation", not for "constant rotation").
  */
 #include "inclino/still.h"
 

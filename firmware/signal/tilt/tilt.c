@@ -1,14 +1,14 @@
 /*
- * tilt.c - roll and pitch estimation, seed 004 step 4 and the two-state Kalman filter (see
+ * tilt.c - roll and pitch estimation, [CN110567483] step 4 and the two-state Kalman filter (see
  * inclino/tilt.h and docs/kalman.md).
  *
  * Both seed forms run the second Kalman stage as the generic filter with one state (A = 1,
- * B = dt, u = w - off, H = 1, Q = Q2, R = R2), which is exactly the seed's P2-, K2, X2, P2
+ * B = dt, u = w - off, H = 1, Q = Q2, R = R2), which is exactly the patent's P2-, K2, X2, P2
  * sequence; the modes differ only in how the offset is formed after the update, from the
  * correction c = theta(k) - w_theta(k) that the update applied:
- *   printed  (seed 004, 4a/4b)  off = c / dt. Substituted into 4c this cancels the previous
+ *   printed  ([CN110567483], 4a/4b)  off = c / dt. Substituted into 4c this cancels the previous
  *            correction, w_theta(k+1) = w_theta(k) + w(k+1) dt, so the offset never learns the
- *            bias (reference/seed-notes.md, 004).
+ *            bias (docs/references.md, [CN110567483]).
  *   feedback off = off - Kb c / dt. A positive bias makes w_theta run ahead of the
  *            accelerometer, c < 0, off grows toward the bias: the sign is right and the integral
  *            removes a constant bias completely (a PI loop: proportional K2 / dt, integral

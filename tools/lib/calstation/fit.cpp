@@ -187,8 +187,8 @@ std::string block_measurements(const Station &st, std::vector<BlockMeas> &out)
                        " g): +1 g and -1 g swapped (or the axis is dead)";
             }
             b.have[a] = true;
-            // Seed 000: offset = (A+ + A-)/2, gain = (A+ - A-)/2. Seed 000 prints the gain as
-            // 0.5 * (A+ - A-)/2; that extra 0.5 is a misprint (seed-notes.md).
+            // [ADI-EPB]: offset = (A+ + A-)/2, gain = (A+ - A-)/2. [ADI-EPB] prints the gain as
+            // 0.5 * (A+ - A-)/2; that extra 0.5 is a misprint (docs/references.md).
             b.bias[a] = 0.5 * (ap + an);
             b.scale[a] = 0.5 * (ap - an);
         }
@@ -261,7 +261,7 @@ Spread spread_fn(const std::vector<BlockMeas> &b, const std::vector<std::vector<
         thi = std::max(thi, ts / n);
     }
     if (nm < 1) return r;
-    // Seed 002 eq. (8)-(15): B = Bmax - Bmin; dK = (Kmax - Kmin) / Kmean * 1e6 / span, with the
+    // [TEMP-LORENTZ] eq. (8)-(15): B = Bmax - Bmin; dK = (Kmax - Kmin) / Kmean * 1e6 / span, with the
     // span of the soak temperatures (80 degC in the paper).
     const double span = std::max(thi - tlo, 1e-9);
     r.bias_mean_mg = (mhi - mlo) * 1e3;
@@ -321,7 +321,7 @@ TemperatureFits fit_temperature(const std::vector<BlockMeas> &b,
         tf.bias[2][a] = fit_lorentz(bp, hb);
         tf.scale[2][a] = fit_lorentz(sp, hs);
         // PWL: uniform knots over the soak range at the most common soak spacing (the median
-        // of consecutive differences: 10 degC for seed 002's schedule, which is not upset by an
+        // of consecutive differences: 10 degC for [TEMP-LORENTZ]'s schedule, which is not upset by an
         // extra ambient point), at most kTParams knots.
         if (bmean.size() >= 2) {
             std::vector<double> d;
@@ -680,7 +680,7 @@ std::string fit_station(const Station &st, const FitOptions &opt, CalResult &out
     rep += b;
     if (opt.tmodel != TChoice::None) {
         rep +=
-            "temperature compensation: residual spread per model (seed 002 definitions)\n"
+            "temperature compensation: residual spread per model ([TEMP-LORENTZ] definitions)\n"
             "  bias: Bmax-Bmin of soak-point means, mg [over every soak]\n"
             "  scale factor: (Kmax-Kmin)/Kmean*1e6/span of soak-point means, ppm/degC [over every soak]\n";
         std::snprintf(b, sizeof b, "  %-4s %-6s %17s", "axis", "", "raw");

@@ -1,6 +1,6 @@
 // simulate.cpp - a calibration station in the simulator: a chamber that ramps and soaks as in
-// seed 002 (10 degC/h, 1 h soak, -20..60 degC every 10 degC, repeated up/down cycles), a
-// positioner (six +-1 g faces, tilt sweeps within +-30 deg for the nonlinearity, seed 000) and a
+// [TEMP-LORENTZ] (10 degC/h, 1 h soak, -20..60 degC every 10 degC, repeated up/down cycles), a
+// positioner (six +-1 g faces, tilt sweeps within +-30 deg for the nonlinearity, [ADI-EPB]) and a
 // rate table (still interval, +-360 deg turns), sampling a sim_calpart through its error-model
 // hook and quantising like an ADIS16364-class IMU.
 #include "inclino/calstation/station.hpp"
@@ -75,7 +75,7 @@ class Sim
 
     double temp_reading()
     {
-        // TEMP_OUT: 0.136 degC/LSB, 0 LSB = 25 degC, 12-bit two's complement (sensors.md 3.x).
+        // TEMP_OUT: 0.136 degC/LSB, 0 LSB = 25 degC, 12-bit two's complement (docs/sensor-facts.md §3.x).
         const int32_t q = sim_quantise(die_ - 25.0 + cfg_.temp_noise_c * sim_rng_gauss(&trng_),
                                        kSimTempLsbC, 12, nullptr);
         return 25.0 + q * kSimTempLsbC;
@@ -139,7 +139,7 @@ class Sim
     {
         const long block = next_block_++;
         six_faces(block);
-        // Tilt sweeps within +-30 deg (seed 000: road slopes stay within +-30 deg, +-500 mg):
+        // Tilt sweeps within +-30 deg ([ADI-EPB]: road slopes stay within +-30 deg, +-500 mg):
         // axis i sees sin(theta), a second axis cos(theta).
         for (int i = 0; i < 3; i++) {
             const int j = (i == 2) ? 0 : 2;
@@ -159,7 +159,7 @@ class Sim
     {
         const double zero_g[3] = {0.0, 0.0, 1.0};
         sim_inertial_input out;
-        // Still interval: about 100 s at 819.2 SPS (seed 003's manual calibration: 82 000).
+        // Still interval: about 100 s at 819.2 SPS ([ADI-IMU-QS]'s manual calibration: 82 000).
         {
             const long n = 82000;
             double sum[3] = {0.0, 0.0, 0.0}, tsum = 0.0;

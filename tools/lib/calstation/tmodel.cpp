@@ -154,7 +154,7 @@ TFit fit_three_point(const std::vector<TPoint> &m, double t_amb)
         f.message = "three-point fit: cold, ambient and hot points must be at least 1 degC apart";
         return f;
     }
-    // Step 1 (seed 000): remove the ambient offset c = y(Ta). Step 2: linear term from the hot
+    // Step 1 ([ADI-EPB]): remove the ambient offset c = y(Ta). Step 2: linear term from the hot
     // point, b = (y(Th) - y(Ta)) / (Th - Ta). Step 3: the parabola through (Tc, dN2), (Ta, 0),
     // (Th, 0), dN2 = what steps 1 and 2 leave at the cold point.
     const double c = m[ia].y;

@@ -285,10 +285,14 @@ fx_q30_t fx_sqrt_q30(fx_q30_t x);
 
 /* ---- Trigonometry (angles in Q16 degrees, ratios in Q30) ------------------------------------ */
 
-/* atan2(y, x) in Q16 degrees, range (-180, 180]. y and x are any int32 in one common format
- * (only their ratio and signs matter), including INT32_MIN. Exact on the axes and diagonals:
+/* atan2(y, x) in Q16 degrees, range [-180, 180] (both ends reachable). y and x are any int32 in
+ * one common format (only their ratio and signs matter), including INT32_MIN. Exact on the axes
+ * and diagonals:
  *   atan2(0, 0) = 0; atan2(0, x>0) = 0; atan2(0, x<0) = +180 deg; atan2(y>0, 0) = +90;
  *   atan2(y<0, 0) = -90; |y| == |x| -> +-45 / +-135.
+ * The result is rounded to the nearest LSB, so just below the negative x axis (y < 0, x < 0,
+ * |y/x| below about 1.3e-7 rad, half an LSB) it is exactly -180 deg, e.g. atan2(-1, -2^30) =
+ * -180; just above it, +180. A caller that needs (-180, 180] maps -180 to +180 itself.
  * Odd in y: atan2(-y, x) == -atan2(y, x) exactly (except the +180 of the negative x axis).
  * |error| <= 0.81 LSB Q16 (1.24e-5 deg) everywhere (error budget in fx_trig.c; measured max
  * 0.57 LSB); the requirement is 0.001 deg = 65.5 LSB.

@@ -3,7 +3,7 @@
  * (ADIS16250/16255 gyroscope, ADIS1636x/1640x IMUs). Family drivers build on it; it only sees
  * struct spi_dev frames.
  *
- * Protocol (sensors.md §2.2, §3.1; ADIS16250/55 Rev B p. 11, ADIS1636x/1640x datasheets):
+ * Protocol (docs/sensor-facts.md §2.2, §3.1; ADIS16250/55 Rev B p. 11, ADIS1636x/1640x datasheets):
  *   - SPI mode 3, MSB first, 16-bit frames, CS toggled with the part's stall time between frames
  *     (the device's struct spi_timing carries it);
  *   - read: DIN = addr << 8 (bit 15 = 0); the whole 16-bit register comes out on DOUT during the

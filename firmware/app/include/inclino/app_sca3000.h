@@ -19,7 +19,7 @@ extern "C" {
 /* ---- SCA3000 ------------------------------------------------------------------------------ */
 
 /*
- * The SCA3000 has no data-ready output (sensors.md 1.6), so the adapter paces its reads at the
+ * The SCA3000 has no data-ready output (docs/sensor-facts.md §1.6), so the adapter paces its reads at the
  * part's output data rate (sca3000_odr_mhz): each read waits until one output period after the
  * previous one (hal_delay_until; the first waits one period too, so that no sample from before the
  * adapter started is used) and then reads X, Y, Z (and the temperature on the D01). A read

@@ -1,11 +1,11 @@
 // kfref.hpp - double-precision reference models of the Kalman filters (host only, C++17, Eigen).
 //
 // Module inclino_kfref (sim/kfref). Each class is the textbook form of one firmware filter, in
-// double, written from the equations (seed 001, seed 004, docs/kalman.md) and not from the
+// double, written from the equations ([KF-SCA3000], [CN110567483], docs/kalman.md) and not from the
 // fixed-point code, so that the tests in tests/kf can compare the two on the same inputs:
 //   KfRef     inclino/kf.h        the five equations, sequential scalar updates, Joseph form
-//   AdaptRef  inclino/kf_adapt.h  seed 004 steps 2-3 on one axis, sliding window
-//   TiltRef   inclino/tilt.h      seed 004 step 4 (printed / feedback) and the two-state filter
+//   AdaptRef  inclino/kf_adapt.h  [CN110567483] steps 2-3 on one axis, sliding window
+//   TiltRef   inclino/tilt.h      [CN110567483] step 4 (printed / feedback) and the two-state filter
 // Units: KfRef works in the firmware's raw units (x raw, P raw^2); AdaptRef and TiltRef in
 // physical units (g, deg, deg/s, s, unit^2). The from_fixed() helpers turn a firmware
 // configuration into the reference's exactly (every parameter as the firmware sees it after its
@@ -61,7 +61,7 @@ class KfRef
     void update_row(const Eigen::RowVectorXd &h, double r, double z);
 };
 
-// Seed 004 steps 2-3 on one axis (physical units of the axis).
+// [CN110567483] steps 2-3 on one axis (physical units of the axis).
 struct AdaptParams {
     unsigned window = 8;
     double C = 0, D = 0, A = 0, B = 0, p0 = 0;

@@ -35,7 +35,7 @@ extern "C" {
 #endif
 
 /* Largest divisor of any filter here: 2^31 samples (the exact int64 sum bound, FX_SUM_MAX_COUNT).
- * 100 s at 819.2 SPS is 81 920 samples (seed 003 manual calibration: 82 000), far inside. */
+ * 100 s at 819.2 SPS is 81 920 samples ([ADI-IMU-QS] manual calibration: 82 000), far inside. */
 #define AVG_MAX_DIVISOR 0x80000000u
 
 /* ---- Block average ------------------------------------------------------------------------
@@ -92,7 +92,7 @@ int avg_moving_push(struct avg_moving *m, int32_t x, int32_t *mean, bool *full);
 /* Empty the window (the length and buffer are kept). */
 void avg_moving_restart(struct avg_moving *m);
 
-/* ---- Cascaded multi-pass moving average (seed 001: 1 to 4 passes) ---------------------------
+/* ---- Cascaded multi-pass moving average ([KF-SCA3000]: 1 to 4 passes) ---------------------------
  * P passes of a W-sample moving average, each pass averaging the previous pass's output. The
  * passes keep exact int64 sums (pass k holds sums of W^k samples) and the output is rounded once:
  *   y[n] = round( sum_j h_P[j] x[n - j] / W^P ),  h_P = P-fold convolution of W ones,
@@ -137,14 +137,14 @@ uint32_t avg_cascade_taps(const struct avg_cascade *c);
 void avg_cascade_restart(struct avg_cascade *c);
 
 /* ---- Bartlett decimator (ADIS SENS_AVG filter) ----------------------------------------------
- * The ADIS1636x/1640x digital filter (seed 003, sensors.md 3.4 SENS_AVG): two cascaded N-tap
+ * The ADIS1636x/1640x digital filter ([ADI-IMU-QS], docs/sensor-facts.md §3.4 SENS_AVG): two cascaded N-tap
  * moving averages, N = 2^M, M = SENS_AVG[2:0] in 0..6, i.e. a triangular (Bartlett) window of
  * 2N - 1 taps: y[n] = round( sum_j t[j] x[n - j] / N^2 ), t = 1, 2, .., N, .., 2, 1.
  * Group delay N - 1 samples; white-noise rms gain sqrt((2N^2 + 1) / (3N^3)).
- * Decimation by D: an output every D-th input, D in 1..N (seed 003: divide the rate by any
+ * Decimation by D: an output every D-th input, D in 1..N ([ADI-IMU-QS]: divide the rate by any
  * integer 2..N, N the taps per stage; a larger D would alias, so it is rejected). This is both
  * the firmware twin of the part's own filter (feed it raw samples taken with SENS_AVG M = 0) and
- * the host-side "count data-ready and keep every D-th" decimation of the seed, done in firmware.
+ * the host-side "count data-ready and keep every D-th" decimation of [ADI-IMU-QS], done in firmware.
  * The two stages update every input (O(1)); the rounding shift by 2M runs only per output.
  * Fixed storage: AVG_BARTLETT_MAX_TAPS per stage inside the struct. History seeded with the first
  * sample as for the cascade; *full after 2N - 1 inputs. */

@@ -18,7 +18,7 @@
  *   per axis i, with T the temperature and r_i the nominal-scaled reading (g):
  *     b_i = acc_offset_i + tbias_i(T)                 (g)
  *     k_i = acc_gain_i * (1 + tscale_i(T))            (g/g)
- *     v_i = (r_i - b_i) / k_i                         seed 000: a_true = (a_out - offset) / gain
+ *     v_i = (r_i - b_i) / k_i                         [ADI-EPB]: a_true = (a_out - offset) / gain
  *     n_i = v_i + c0 + c1*x + c2*x^2 + c3*x^3,  x = clamp(v_i, -CAL_NONLIN_X_MAX, +CAL_NONLIN_X_MAX)
  *   a = M * n                                          (3x3 misalignment / cross-axis matrix)
  *   b and 1/k are computed once per temperature change (cal_acc_set_temp); a sample costs one
@@ -104,19 +104,19 @@ int cal_avg_mean(const struct cal_avg *a, int32_t max_span, int32_t mean[3]);
 /* ---- On-device accelerometer procedures ------------------------------------------------------ */
 
 /*
- * One-point calibration (seed 000): with the part still in a known field expect[i] (g Q16, e.g.
+ * One-point calibration ([ADI-EPB]): with the part still in a known field expect[i] (g Q16, e.g.
  * 0, 0, +1 g level), offset[i] = mean[i] - expect[i], exact. Removes the offset only; the gain
- * error stays (seed 000: "simple but not accurate enough"). INC_ERR_NULL; INC_ERR_RANGE when any
+ * error stays ([ADI-EPB]: "simple but not accurate enough"). INC_ERR_NULL; INC_ERR_RANGE when any
  * |offset| > CAL_OFFSET_MAX (0.5 g) or |expect| > 1 g: offset untouched.
  */
 int cal_one_point(const fx_q16_t mean[3], const fx_q16_t expect[3], fx_q16_t offset[3]);
 
 /*
- * Two-point +-1 g flip of one axis (seed 000): a_pos, a_neg are the still means (g Q16) with the
+ * Two-point +-1 g flip of one axis ([ADI-EPB]): a_pos, a_neg are the still means (g Q16) with the
  * axis up (+1 g) and down (-1 g):
  *     offset = (a_pos + a_neg) / 2        Q16, rounded (|error| <= 0.5 LSB)
  *     gain   = (a_pos - a_neg) / 2        Q30, exact ((a_pos - a_neg) * 2^13)
- * Seed 000 prints the gain as 0.5 * (A+ - A-) / 2; that 0.5 is a misprint (with it an ideal
+ * [ADI-EPB] prints the gain as 0.5 * (A+ - A-) / 2; that 0.5 is a misprint (with it an ideal
  * part would get gain 0.5 and read double): the correct form is used. Then a_true =
  * (a_out - offset) / gain. Errors (outputs untouched): INC_ERR_NULL; INC_ERR_DEGENERATE when
  * a_pos <= a_neg (+1 g and -1 g swapped, or a dead axis); INC_ERR_RANGE when the gain is outside

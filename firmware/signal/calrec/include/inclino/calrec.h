@@ -98,7 +98,7 @@ enum calrec_family {
 
 /*
  * Identity of the sensor part the record was made for, as read from the part at calibration
- * time (sensors.md 1.3, 2.3, 3.2, 3.5). A record is used only when every field equals what the
+ * time (docs/sensor-facts.md §1.3, 2.3, 3.2, 3.5). A record is used only when every field equals what the
  * part reports at boot. Fields a part does not have are 0.
  *
  *   family       product                              revision       serial        lot_id1/2
@@ -128,8 +128,8 @@ struct calrec_binding {
 enum calrec_tmodel_kind {
     CALREC_TM_NONE = 0,     /* y(T) = 0 */
     CALREC_TM_LINEAR = 1,   /* y = p0 + p1*u,            u = (Th - t_ref) / t_span */
-    CALREC_TM_PARABOLA = 2, /* y = p0 + p1*u + p2*u^2    (seed 000 three-point: c, b, a) */
-    CALREC_TM_LORENTZ = 3,  /* y = p0 + p1 / (1 + ((T - p3) / (p2 / 2))^2)  (seed 002) */
+    CALREC_TM_PARABOLA = 2, /* y = p0 + p1*u + p2*u^2    (three-point, in u: not a, b, c) */
+    CALREC_TM_LORENTZ = 3,  /* y = p0 + p1 / (1 + ((T - p3) / (p2 / 2))^2)  ([TEMP-LORENTZ]) */
     CALREC_TM_PWL = 4,      /* n knots at T_i = t_ref + i*t_span, y_i = p[i]; held at the ends */
     CALREC_TM_LORENTZ_CUBIC = 5, /* y = LORENTZ(Th) + p4*u + p5*u^2 + p6*u^3 (since version 2) */
 };
@@ -179,7 +179,7 @@ struct calrec_tmodel {
  *   acc_offset[a]      g, Q16.16. |v| <= CALREC_LIM_ACC_OFFSET (0.5 g). Two-point flip:
  *                      offset = (A(+1g) + A(-1g)) / 2.
  *   acc_gain[a]        unitless Q30, [CALREC_LIM_GAIN_MIN, CALREC_LIM_GAIN_MAX] = [0.75, 1.25].
- *                      gain = (A(+1g) - A(-1g)) / 2 in g per g (no extra 0.5, see seed-notes);
+ *                      gain = (A(+1g) - A(-1g)) / 2 in g per g (no extra 0.5, see docs/references.md);
  *                      a_true = (a_out - offset) / gain.
  *   acc_misalign[r][c] unitless Q30, 3x3 cross-axis correction applied after offset and gain;
  *                      diagonal in [0.75, 1.25], off-diagonal |v| <= 0.125.

@@ -1,16 +1,16 @@
 /*
- * gpsblend.h - speed across the gaps between GPS fixes (seed 001), module inclino_gpsblend,
+ * gpsblend.h - speed across the gaps between GPS fixes ([KF-SCA3000]), module inclino_gpsblend,
  * prefix gpsb_.
  *
  * GPS gives speed once a second; between fixes the speed is propagated from the along-track
- * acceleration every step (13 ms in seed 001) and blended with the last GPS speed:
+ * acceleration every step (13 ms in [KF-SCA3000]) and blended with the last GPS speed:
  *   v_acc = v + a * g0 * dt                       (dead reckoning from the current estimate)
  *   v     = v_gps + K * (v_acc - v_gps)           (K = 1: trust the accelerometer)
  *   K^2   = A^2 / (A^2 + Q^2), then n rounds of K = K + (1 - K) * K
- * A is the acceleration, Q the accelerometer's noise at rest (seed 001: Q = 20 counts, i.e. the
+ * A is the acceleration, Q the accelerometer's noise at rest ([KF-SCA3000]: Q = 20 counts, i.e. the
  * same unit as A). When the vehicle cruises (|A| << Q) K is near 0 and the speed stays on the
  * GPS value; when it accelerates or turns (|A| >> Q) K goes to 1 and the accelerometer carries
- * it. Each round pushes K towards 1: one round is 1 - (1 - K)^2, seed 001's preferred curve.
+ * it. Each round pushes K towards 1: one round is 1 - (1 - K)^2, [KF-SCA3000]'s preferred curve.
  * A GPS fix resets the speed to the fix.
  *
  * Fixed point: acceleration and Q in Q16.16 g, speed in Q16.16 m/s at the interface (Q32.32

@@ -1,7 +1,7 @@
 /*
  * kf.h - small linear Kalman filter in fixed point (module inclino_kf, prefix kf_).
  *
- * The five equations of seed 001 for 1 to KF_N_MAX states:
+ * The five equations of [KF-SCA3000] for 1 to KF_N_MAX states:
  *   (1) x(k|k-1) = A x(k-1|k-1) + B u(k)                       kf_predict
  *   (2) P(k|k-1) = A P(k-1|k-1) A' + Q                          kf_predict
  *   (3) x(k|k)   = x(k|k-1) + Kg(k) (z(k) - H x(k|k-1))         kf_update

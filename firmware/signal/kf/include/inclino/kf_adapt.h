@@ -1,5 +1,5 @@
 /*
- * kf_adapt.h - the adaptive per-axis Kalman filter of seed 004, steps 1 to 3 (module inclino_kf,
+ * kf_adapt.h - the adaptive per-axis Kalman filter of [CN110567483], steps 1 to 3 (module inclino_kf,
  * prefix kf_adapt_).
  *
  * One scalar filter per axis; kf_adapt6 runs six of them (gyro x, y, z, accel x, y, z, the
@@ -13,10 +13,10 @@
  *            K    = P- / (P- + R(k))
  *            X(k) = X- + K (Z(k) - X-)
  *            P(k) = (1 - K) P-
- * k is the window: the current sample and the k-1 before it, sliding. The printed dz (seed 004,
+ * k is the window: the current sample and the k-1 before it, sliding. The printed dz ([CN110567483],
  * step 2) divides by k - 1 but its sum leaves Z(k) out, which is not the mean difference it
- * names; with Z(k) in the sum it is (reference/seed-notes.md). A growing window from the first
- * sample (the seed's literal k) would make dz insensitive to new samples after a long run, so
+ * names; with Z(k) in the sum it is (docs/references.md). A growing window from the first
+ * sample (the patent's literal k) would make dz insensitive to new samples after a long run, so
  * the window slides. Until k samples have arrived the samples seen so far are used (n of them,
  * dz over n - 1 differences); the first sample sets X = Z and dz = 0.
  *
@@ -59,9 +59,9 @@ extern "C" {
 #define KF_ADAPT_WIN_MAX 32u
 #endif
 
-#define KF_ADAPT_AXES 6u /* gyro x, y, z, accel x, y, z (seed 004: in_wx .. in_az) */
+#define KF_ADAPT_AXES 6u /* gyro x, y, z, accel x, y, z ([CN110567483]: in_wx .. in_az) */
 
-/* Constants of one axis (seed 004 step 2 names). */
+/* Constants of one axis ([CN110567483] step 2 names). */
 struct kf_adapt_config {
     uint32_t window; /* k: samples in the window including the current one, 2..KF_ADAPT_WIN_MAX */
     int64_t c;       /* C: process noise constant, P format, 1..KF_P_MAX */

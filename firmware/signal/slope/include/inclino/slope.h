@@ -7,9 +7,9 @@
  * calibrated part. The estimate is
  *   single axis:  theta = asin(A_s)                 (A_s: the axis along the slope, in g)
  *   two axes:     theta = atan2(A_s, A_g)           (A_g: the axis along gravity when level)
- * and the bound follows seed 000's error budget, summed worst case (as its Table 1 does):
+ * and the bound follows [ADI-EPB]'s error budget, summed worst case (as its Table 1 does):
  *   e_a = |A| * sensitivity + offset + nonlinearity + temperature + k * sigma / sqrt(N)
- * where k is the noise factor ("6 sigma" in seed 000; slope_sigma_factor() derives it from the
+ * where k is the noise factor ("6 sigma" in [ADI-EPB]; slope_sigma_factor() derives it from the
  * lifetime exceedance rule E = M * r). The angle bound is exact for that acceleration box: the
  * largest change of asin (two candidates) or atan2 (four corners) over A +- e_a.
  * Why the sensing axis should be perpendicular to gravity: docs/slope.md.
@@ -35,14 +35,14 @@ enum slope_method {
     SLOPE_TWO_AXIS = 1,    /* atan2(A_s, A_g): independent of the sensitivity common to both axes */
 };
 
-/* Residual errors of the calibrated part, one axis, worst case (seed 000 Table 1 "after"). */
+/* Residual errors of the calibrated part, one axis, worst case ([ADI-EPB] Table 1 "after"). */
 struct slope_budget {
     fx_q30_t sensitivity;    /* relative sensitivity error, e.g. 0.001 = 0.1 % (Q30, >= 0, < 0.5) */
     fx_q16_t offset_g;       /* offset residual (Q16 g, >= 0) */
     fx_q16_t nonlinearity_g; /* nonlinearity residual within +-30 deg (Q16 g, >= 0) */
     fx_q16_t temperature_g;  /* offset drift over temperature after compensation (Q16 g, >= 0) */
     fx_q16_t noise_sigma_g;  /* rms noise of ONE sample (Q16 g, >= 0) */
-    fx_q16_t k_sigma;        /* noise factor k (Q16, > 0): 6.0 in seed 000 */
+    fx_q16_t k_sigma;        /* noise factor k (Q16, > 0): 6.0 in [ADI-EPB] */
 };
 
 struct slope_cfg {
@@ -110,7 +110,7 @@ int slope_estimate(const struct slope_cfg *cfg, const struct slope_input *in,
                    struct slope_result *out);
 
 /*
- * The noise factor k for the lifetime exceedance rule of seed 000, E = M * r: with M runs over
+ * The noise factor k for the lifetime exceedance rule of [ADI-EPB], E = M * r: with M runs over
  * the vehicle's life and E the expected number of runs whose noise exceeds k sigma, the two-sided
  * Gaussian tail must be r = E / M, i.e. k = sqrt(2) * erfc^-1(E / M).
  * runs >= 1, expected_q16 > 0 (Q16, e.g. 0.001 = 66) and r = E/M <= 2^-4 (k >= 1.86); these

@@ -3,8 +3,8 @@
  * still_). Freestanding C11, integer only, caller-allocated state, no heap.
  *
  * They gate what must only run on a part at rest and at a steady temperature: gyro bias
- * calibration (seed 003: "zero rotation, including vibration" and "thermal stability", read
- * TEMP_OUT to confirm) and the EPB slope measurement (seed 000: average while engine, passing
+ * calibration ([ADI-IMU-QS]: "zero rotation, including vibration" and "thermal stability", read
+ * TEMP_OUT to confirm) and the EPB slope measurement ([ADI-EPB]: average while engine, passing
  * traffic and passengers shake the car, reject what is not still).
  *
  * STILLNESS: the samples are cut into consecutive windows of W samples. Per window and per axis
@@ -31,7 +31,7 @@
  *
  * THERMAL SETTLING: temperature samples are block-averaged (avg_n samples per point, to beat the
  * output's quantisation noise); the last `span` points form the window. SETTLED when the window
- * is full and max - min over it <= max_change (seed 003: wait for the initial thermal settling,
+ * is full and max - min over it <= max_change ([ADI-IMU-QS]: wait for the initial thermal settling,
  * read TEMP_OUT to confirm it). The points are rounded means, so a true change of up to
  * max_change + 1 LSB can pass: choose max_change one LSB below the change that must be refused.
  */

@@ -1,15 +1,15 @@
 /*
  * tilt.h - roll and pitch from a 3-axis accelerometer and the x/y gyro (module inclino_tilt,
- * prefix tilt_). Seed 004 step 4, with the classic two-state Kalman filter as the alternative.
+ * prefix tilt_). [CN110567483] step 4, with the classic two-state Kalman filter as the alternative.
  *
  * Per axis (roll about x, pitch about y), every sample:
  *   gyro prediction      w_theta(k) = theta(k-1) + (w(k) - off(k)) dt
  *   accelerometer angle  a_theta(k): roll = atan2(a_y, a_z), pitch = atan2(-a_x, sqrt(a_y^2 + a_z^2))
  *   second Kalman stage  P2- = P2 + Q2, K2 = P2- / (P2- + R2),
  *                        theta(k) = w_theta(k) + K2 (a_theta(k) - w_theta(k)), P2 = (1 - K2) P2-
- * and the modes differ in the gyro offset off(k) (docs/kalman.md, "Seed 004 step 4"):
+ * and the modes differ in the gyro offset off(k) (docs/kalman.md, "[CN110567483] step 4"):
  *   TILT_MODE_FEEDBACK      (default) off(k+1) = off(k) - Kb (theta(k) - w_theta(k)) / dt:
- *                           the seed's offset with its sign corrected and integrated, which
+ *                           the patent's offset with its sign corrected and integrated, which
  *                           estimates and removes a constant gyro bias.
  *   TILT_MODE_SEED_PRINTED  off(k+1) = (theta(k) - w_theta(k)) / dt, exactly as printed. Then
  *                           w_theta(k+1) = w_theta(k) + w(k+1) dt: the prediction is the pure
@@ -17,7 +17,7 @@
  *                           (1 - K2) b t without bound (tests/tilt prove it). For comparison only.
  *   TILT_MODE_KF2           the state (angle, bias) with A = [1 -dt; 0 1], B = [dt; 0], u = w,
  *                           H = [1 0], Q = diag(q_angle dt, q_bias dt), R = R2 (inclino/kf.h).
- * The seed's per-axis form assumes small angles and a small yaw rate: the roll rate is taken as
+ * The patent's per-axis form assumes small angles and a small yaw rate: the roll rate is taken as
  * w_x and the pitch rate as w_y (the Euler-rate coupling w_z tan(pitch) is neglected; it matters
  * when turning on a slope, see docs/kalman.md).
  *
@@ -62,8 +62,8 @@ extern "C" {
 #endif
 
 enum tilt_mode {
-    TILT_MODE_FEEDBACK = 0,     /* seed 004 step 4, offset fed back with the sign corrected */
-    TILT_MODE_SEED_PRINTED = 1, /* seed 004 step 4 as printed (drifts with a gyro bias) */
+    TILT_MODE_FEEDBACK = 0,     /* [CN110567483] step 4, offset fed back with the sign corrected */
+    TILT_MODE_SEED_PRINTED = 1, /* [CN110567483] step 4 as printed (drifts with a gyro bias) */
     TILT_MODE_KF2 = 2,          /* two-state (angle, gyro bias) Kalman filter */
 };
 
@@ -117,7 +117,7 @@ struct tilt_input {
 struct tilt_output {
     fx_q16_t angle_deg[TILT_AXES];       /* roll, pitch */
     fx_q16_t sigma_deg[TILT_AXES];       /* 1-sigma of the estimate (sqrt of the variance) */
-    fx_q16_t bias_dps[TILT_AXES];        /* gyro offset estimate (PRINTED: the seed's off) */
+    fx_q16_t bias_dps[TILT_AXES];        /* gyro offset estimate (PRINTED: the patent's off) */
     fx_q16_t accel_angle_deg[TILT_AXES]; /* the accelerometer's angles (0 when rejected) */
     uint32_t flags;                      /* TILT_F_* */
     bool valid;                          /* started, no overflow: the angles may be used */

@@ -12,7 +12,7 @@
  * Gyro, per axis: out_i = gyro_bias_i + gyro_scale_i * rate_i + noise (deg/s).
  * The temperature is passed through unchanged (the device model quantises its own TEMP_OUT).
  *
- * Temperature curve (struct sim_calpart_tcurve), after seed 002: a Lorentz-like peak that is
+ * Temperature curve (struct sim_calpart_tcurve), after [TEMP-LORENTZ]: a Lorentz-like peak that is
  * deliberately NOT exactly any model the station fits:
  *     y(T, m) = y0 + height / (1 + ((T - centre) / (width / 2))^2) + lin * u + cubic * u^3
  *               + hyst * m,            u = (T - SIM_CALPART_T_MID) / SIM_CALPART_T_HALF
@@ -33,12 +33,12 @@
 extern "C" {
 #endif
 
-#define SIM_CALPART_T_MIN (-20.0) /* seed 002's temperature range, degC */
+#define SIM_CALPART_T_MIN (-20.0) /* [TEMP-LORENTZ]'s temperature range, degC */
 #define SIM_CALPART_T_MAX 60.0
 #define SIM_CALPART_T_MID 20.0 /* centre and half span of that range: u = -1..1 */
 #define SIM_CALPART_T_HALF 40.0
 
-/* Seed 002's magnitudes that sim_calpart_normalise() imposes on a part. */
+/* [TEMP-LORENTZ]'s magnitudes that sim_calpart_normalise() imposes on a part. */
 #define SIM_CALPART_PAPER_BIAS_SPREAD_G 0.014   /* Bmax - Bmin over the 10 degC points */
 #define SIM_CALPART_PAPER_SCALE_PPM_PER_C 151.6 /* (Kmax-Kmin)/Kmean * 1e6 / 80 */
 
@@ -77,7 +77,7 @@ struct sim_calpart {
 double sim_calpart_tcurve_eval(const struct sim_calpart_tcurve *c, double t_c, double m);
 
 /*
- * Seed 002's metrics of the hysteresis-free curves (m = 0) at the points -20, -10, ..., 60 degC:
+ * [TEMP-LORENTZ]'s metrics of the hysteresis-free curves (m = 0) at the points -20, -10, ..., 60 degC:
  * bias spread max - min (g) of axis `axis`, and scale-factor drift (Kmax - Kmin) / Kmean * 1e6 /
  * 80 (ppm/degC).
  */
@@ -92,17 +92,17 @@ double sim_calpart_scale_ppm_per_c(const struct sim_calpart_params *p, int axis)
 void sim_calpart_normalise(struct sim_calpart_params *p);
 
 /*
- * Part "A": hand-shaped so that its fits land near seed 002's figures (a falling Lorentz tail
+ * Part "A": hand-shaped so that its fits land near [TEMP-LORENTZ]'s figures (a falling Lorentz tail
  * with its peak below the range, a small cubic term and +-0.1 mg / +-10 ppm hysteresis),
  * normalised to the paper's magnitudes. Also typical offsets, gains, misalignment (about
- * 0.5 deg), a 10 mg nonlinearity at 0.5 g (seed 000's budget figure), 3 mg noise.
+ * 0.5 deg), a 10 mg nonlinearity at 0.5 g ([ADI-EPB]'s budget figure), 3 mg noise.
  */
 void sim_calpart_paper(struct sim_calpart_params *p);
 
 /*
  * A part with curves drawn from `seed` (centre, width, sign, linear and cubic shares, offsets,
  * gains, misalignment, nonlinearity), then normalised to the paper's magnitudes. Different seeds
- * give different curves; seed 0 is allowed.
+ * give different curves; a zero seed is allowed.
  */
 void sim_calpart_seeded(struct sim_calpart_params *p, uint64_t seed);
 

@@ -136,12 +136,12 @@ int sim_noise_gm_layout(const struct sim_noise_axis *ax, unsigned *n_gm, double 
 
 /*
  * ADIS1636x/1640x presets (docs/noise-and-allan.md). The gyro reproduces the Allan curve behind
- * seed 003 (figure 6): 0.080 deg/s at 0.15 s, 0.0074 deg/s at 30 s (seed: about 0.008),
+ * [ADI-IMU-QS] (figure 6): 0.080 deg/s at 0.15 s, 0.0074 deg/s at 30 s (seed: about 0.008),
  * 0.0061 deg/s at 100 s and a flat minimum of 0.0061 deg/s at 100..150 s (seed: about 0.006
  * near 100 s):
  *   N = 0.031 deg/s/sqrt(Hz) (1.86 deg/sqrt(h)); B = 0.0068 deg/s, tc 0.5..2000 s;
  *   K = 0.00045 deg/s/sqrt(s); bias and temp_coeff 0 (the caller sets them per test).
- * Unfiltered noise at 819.2 SPS: 0.031 * sqrt(819.2) = 0.89 deg/s rms, within seed 003's "less
+ * Unfiltered noise at 819.2 SPS: 0.031 * sqrt(819.2) = 0.89 deg/s rms, within [ADI-IMU-QS]'s "less
  * than 1 deg/s rms".
  */
 #define SIM_NOISE_ADIS_GYRO_ARW 0.031     /* deg/s/sqrt(Hz) */

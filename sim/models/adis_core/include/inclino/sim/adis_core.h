@@ -3,7 +3,7 @@
  * shared by their models; each model supplies its register file through the hooks below.
  *
  * Written from the datasheets (ADIS16250/55 Rev B p. 11; ADIS16362/67/407 SPI sections; see
- * sensors.md §2.2, §3.1), not from the drivers:
+ * docs/sensor-facts.md §2.2, §3.1), not from the drivers:
  *   - 16-bit frames, mode 3. A read command (bit 15 = 0, address in bits 14..8) latches the
  *     register when CS rises; its value is shifted out during the NEXT frame.
  *   - A write command (bit 15 = 1) writes its low byte to the addressed byte register when CS

@@ -1,4 +1,4 @@
-// compare.hpp - seed 002's comparison reproduced in the simulator (docs/benchmarks.md,
+// compare.hpp - [TEMP-LORENTZ]'s comparison reproduced in the simulator (docs/benchmarks.md,
 // "Calibration"): a simulated part is measured as the paper did (10 degC points, 1 h soaks,
 // repeated up/down cycles, noise), every temperature model is fitted, and the residual spreads
 // are reported in-sample (the paper's way) and held out (a second run at the mid-points
@@ -34,7 +34,7 @@ struct CompareAxis {
 };
 
 struct CompareConfig {
-    int cycles = 10; // calibration run (seed 002: 10)
+    int cycles = 10; // calibration run ([TEMP-LORENTZ]: 10)
     int validation_cycles = 3;
     uint64_t noise_seed = 1;
 };

@@ -3,10 +3,10 @@
 //
 // Pipeline (docs/calibration.md, "What the station fits"):
 //  1. Per block (chamber soak) and axis, the +-1 g flip pair gives the bias (A+ + A-)/2 and the
-//     scale factor (A+ - A-)/2 (seed 000, without its spurious 0.5), in g from the nominal LSB.
+//     scale factor (A+ - A-)/2 ([ADI-EPB], without its spurious 0.5), in g from the nominal LSB.
 //  2. Blocks are grouped into soak points (temperatures within 2 degC). Bias and scale factor
-//     against temperature are fitted with every model (linear, seed 000's three-point parabola,
-//     Lorentz (seed 002), piecewise-linear, Lorentz + cubic); the chosen model becomes
+//     against temperature are fitted with every model (linear, [ADI-EPB]'s three-point parabola,
+//     Lorentz ([TEMP-LORENTZ]), piecewise-linear, Lorentz + cubic); the chosen model becomes
 //     acc_offset/acc_gain (its value at t_ref) and acc_tbias/acc_tscale (the deviation from it).
 //  3. Every acc row, temperature-corrected, gives v = (r - B(T)) / K(T) per element; per element
 //     i a least-squares fit of  P_i . f - c0 - c2 v^2 - c3 v^3 = v  over all positions f gives
@@ -50,7 +50,7 @@ struct BlockMeas {
     std::array<double, 3> scale{}; // g/g
 };
 
-// The residual spreads of one model on one axis (seed 002 definitions).
+// The residual spreads of one model on one axis ([TEMP-LORENTZ] definitions).
 struct Spread {
     double bias_mean_mg = 0.0;   // Bmax - Bmin of soak-point means of the residual bias
     double bias_all_mg = 0.0;    // the same over every block (includes hysteresis and noise)

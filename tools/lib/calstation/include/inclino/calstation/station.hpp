@@ -80,11 +80,11 @@ enum class Schedule {
 struct SimConfig {
     SimPart part;
     Schedule schedule = Schedule::Calibration;
-    int cycles = 10;            // up/down chamber cycles (seed 002: 10)
+    int cycles = 10;            // up/down chamber cycles ([TEMP-LORENTZ]: 10)
     int samples = 2000;         // samples averaged per acc position
     double rate_sps = 819.2;    // sample rate (ADIS1636x)
-    double ramp_c_per_h = 10.0; // seed 002: 10 degC/h
-    double soak_s = 3600.0;     // seed 002: 1 h soak per point
+    double ramp_c_per_h = 10.0; // [TEMP-LORENTZ]: 10 degC/h
+    double soak_s = 3600.0;     // [TEMP-LORENTZ]: 1 h soak per point
     double die_tau_s = 600.0;   // die temperature lag behind the chamber air
     double temp_noise_c = 0.05; // on-board temperature sensor noise, rms
     uint64_t noise_seed = 1;
@@ -92,7 +92,7 @@ struct SimConfig {
     std::array<uint32_t, 6> binding{};
 };
 
-// Counts scale of the simulated part (an ADIS16364-like IMU: sensors.md 3.x).
+// Counts scale of the simulated part (an ADIS16364-like IMU: docs/sensor-facts.md §3.x).
 constexpr double kSimAccLsbG = 0.001;   // 1 mg/LSB, 14-bit
 constexpr double kSimGyroLsbDps = 0.05; // 0.05 deg/s/LSB, 14-bit
 constexpr double kSimTempLsbC = 0.136;  // 0.136 degC/LSB, 0 LSB = 25 degC

@@ -1,6 +1,6 @@
 // tmodel.hpp - temperature models of bias and scale factor: double-precision evaluation with
-// the firmware's semantics, and the fits of the calibration station (seed 000's three-point
-// parabola, seed 002's linear and Lorentz fits, a piecewise-linear table, Lorentz + cubic).
+// the firmware's semantics, and the fits of the calibration station ([ADI-EPB]'s three-point
+// parabola, [TEMP-LORENTZ]'s linear and Lorentz fits, a piecewise-linear table, Lorentz + cubic).
 //
 // The parameterisation is the one of the calibration record (firmware/signal/calrec, calrec.h); the
 // values here are in the physical unit of the quantity (g for bias, unitless for the relative
@@ -13,7 +13,7 @@
 //   LORENTZ_CUBIC the LORENTZ term plus p4*u + p5*u^2 + p6*u^3, all evaluated at T clamped to
 //                 [t_ref - t_span, t_ref + t_span] (the two parts may cancel inside the
 //                 calibrated range and must not be extrapolated apart)
-// Seed 002's Lorentz formula did not survive; the usual form y0 + (2A/pi) w / (4(T-Tc)^2 + w^2)
+// [TEMP-LORENTZ]'s Lorentz formula did not survive; the usual form y0 + (2A/pi) w / (4(T-Tc)^2 + w^2)
 // is the same curve with p1 = 2A/(pi w): p1 (height) is used because it stays in the y format.
 // The clamp of u (the polynomial models hold their end values outside [t_ref - t_span,
 // t_ref + t_span], the calibrated range) is the firmware's documented contract
@@ -68,7 +68,7 @@ struct TFit {
 // Least squares y = a + b*T over all points; t_ref/t_span = centre/half of the data range.
 TFit fit_linear(const std::vector<TPoint> &pts);
 
-// Seed 000's three-point procedure on soak-point means: offset at the ambient point (the one
+// [ADI-EPB]'s three-point procedure on soak-point means: offset at the ambient point (the one
 // nearest t_amb), linear term from the hottest point, parabolic term from the coldest point, so
 // that the parabola passes through all three. Needs 3 distinct soak points.
 TFit fit_three_point(const std::vector<TPoint> &soak_means, double t_amb);
