@@ -1,7 +1,7 @@
 /*
  * adis16255_model.c - simulated ADIS16250/ADIS16255 (see sim/adis16255.h).
  *
- * Facts: sensors.md §2 (A2 = Rev B p. 11 SPI frames, A3 = p. 12 output registers and ND/EA,
+ * Facts: docs/drivers-adis16255.md, Registers and Protocol and timing (A2 = Rev B p. 11 SPI frames, A3 = p. 12 output registers and ND/EA,
  * A4 = p. 15 SMPL_PRD and SCLK limits; A1/A6 register map, MSC_CTRL, STATUS, COMMAND).
  * Choices for [U] facts are marked [U] and listed in docs/drivers-adis16255.md ("Model").
  */

@@ -1,7 +1,7 @@
 /*
  * adis_imu.c - simulated ADIS1636x/1640x (see sim/adis_imu.h and docs/drivers-adis-imu.md).
  *
- * Every number cites its source: sensors.md §3.x, seed 003, or [U] for a model choice where the
+ * Every number cites its source: a section of docs/drivers-adis-imu.md, or [U] for a model choice where the
  * fact sheet has no confirmed value (listed in docs/unconfirmed-facts.md).
  */
 #include "inclino/sim/adis_imu.h"
@@ -42,28 +42,28 @@
 #define ND 0x8000u
 #define EA 0x4000u
 
-/* tB = 1/1638.4 s = 9765625/16 ns exactly (sensors.md §3.4, Linux 1638.404 SPS). */
+/* tB = 1/1638.4 s = 9765625/16 ns exactly (docs/drivers-adis-imu.md §3, Linux 1638.404 SPS). */
 #define TB_16 9765625ull
 #define TB_SLOW 31u /* SMPL_PRD[7]: 52.851 SPS base = 1638.4/31 */
 
-#define GYRO_OFF_LSB_DPS 0.0125 /* sensors.md §3.4, seed 003 */
+#define GYRO_OFF_LSB_DPS 0.0125 /* docs/drivers-adis-imu.md §1.2 */
 #define GYRO_LIMIT_COUNTS \
     6000                     /* [U] output clips at the rated range: +-300/150/75 deg/s
                                        are 6000 counts at 0.05/0.025/0.0125 deg/s */
-#define TEMP_LSB_1636X 0.136 /* sensors.md §3.3 */
+#define TEMP_LSB_1636X 0.136 /* docs/drivers-adis-imu.md §1.2 */
 #define TEMP_LSB_1640X 0.14
 #define SUPPLY_LSB_V 0.002418
 #define MAGN_LSB_GAUSS 0.0005
 #define AUX_LSB_V 0.0008058
-#define SUPPLY_MIN_V 4.75 /* DIAG_STAT[0], [1] (sensors.md §3.4) */
+#define SUPPLY_MIN_V 4.75 /* DIAG_STAT[0], [1] (docs/drivers-adis-imu.md §3) */
 #define SUPPLY_MAX_V 5.25
-#define MEM_TEST_MS_NORMAL 17u /* ADIS16405 flash test 17 / 90 ms (sensors.md §3.4) */
+#define MEM_TEST_MS_NORMAL 17u /* ADIS16405 flash test 17 / 90 ms (docs/drivers-adis-imu.md §3) */
 #define MEM_TEST_MS_LOW_POWER 90u
 #define CS_SETUP_NS 49u           /* [U] tCS recollection 48.8 ns */
 #define CS_HOLD_NS 49u            /* [U] taken equal to tCS */
 #define MOSI_SETUP_NS 20u         /* [U] */
 #define MISO_DELAY_NS 100u        /* [U] tDAV */
-#define PERIOD_NORMAL_NS 500u     /* 2 MHz (sensors.md §3.1) */
+#define PERIOD_NORMAL_NS 500u     /* 2 MHz (docs/drivers-adis-imu.md §2) */
 #define PERIOD_LOW_POWER_NS 3333u /* 300 kHz */
 #define PERIOD_BURST_NS 1000u     /* 1 MHz */
 
@@ -71,7 +71,7 @@ struct variant {
     const char *name;
     uint16_t prod_id;
     bool is_1640x;
-    double accel_lsb_g;   /* sensors.md §3.3 */
+    double accel_lsb_g;   /* docs/drivers-adis-imu.md §1.2 */
     int32_t accel_limit;  /* [U] rated range in counts: 10, 1.7, 5, 18, 18, 18 g */
     unsigned supply_bits; /* 12 (1636x) / 14 (1640x, Linux [U]) */
     unsigned startup_ms;  /* power-on: ADIS16405 220 ms, ADIS16367 180 ms (normal mode) */
@@ -187,7 +187,7 @@ static int32_t quant(double v, double lsb, int32_t lo, int32_t hi, bool *sat)
 static void apply_bus_timing(struct sim_adis_imu *m)
 {
     struct sim_spi_timing t;
-    m->low_power = (m->reg[IDX(REG_SMPL_PRD)] & 0xFFu) > 0x09u; /* sensors.md §3.1 */
+    m->low_power = (m->reg[IDX(REG_SMPL_PRD)] & 0xFFu) > 0x09u; /* docs/drivers-adis-imu.md §2 */
     memset(&t, 0, sizeof(t));
     t.min_period_ns = m->low_power ? PERIOD_LOW_POWER_NS : PERIOD_NORMAL_NS;
     t.min_cs_setup_ns = CS_SETUP_NS;
@@ -261,7 +261,7 @@ static void dr_pulse(struct sim_adis_imu *m, uint64_t now)
     m->dr_pulses++;
 }
 
-/* ---- Bartlett filter (sensors.md §3.4 SENS_AVG; seed 003) ---- */
+/* ---- Bartlett filter (SENS_AVG, docs/drivers-adis-imu.md §3) ---- */
 
 #define HMASK (SIM_ADIS_IMU_HIST - 1u)
 
@@ -435,7 +435,7 @@ static void sample_event(void *arg, uint64_t now)
     m->sample_ev = sim_clock_schedule(m->clk, (m->next_sample_16 + 15u) / 16u, sample_event, m);
 }
 
-/* Sample period from SMPL_PRD, or 819.2 SPS while precision autonull runs (seed 003: "the IMU
+/* Sample period from SMPL_PRD, or 819.2 SPS while precision autonull runs (docs/drivers-adis-imu.md §3: "the IMU
  * sets its own sample rate and filter for the 30 s"). */
 static void restart_sampling(struct sim_adis_imu *m, uint64_t now)
 {
@@ -525,7 +525,7 @@ static void glob_cmd(struct sim_adis_imu *m, uint8_t cmd, uint64_t now)
     m->commands++;
     if (cmd & 0x80u) {
         /* Software reset: settings come back from flash; busy for the reset time of the mode
-         * the part was in (sensors.md §3.4). Other bits in the same write are ignored. */
+         * the part was in (docs/drivers-adis-imu.md §3). Other bits in the same write are ignored. */
         const uint32_t ms = var(m)->reset_ms[m->low_power ? 1 : 0];
         m->prec_active = false;
         m->self_test_active = false;
@@ -539,7 +539,7 @@ static void glob_cmd(struct sim_adis_imu *m, uint8_t cmd, uint64_t now)
         return;
     }
     if (cmd & 0x01u) {
-        /* Autonull (seed 003): the part reads each gyro output and writes the opposite into its
+        /* Autonull (docs/drivers-adis-imu.md §3): the part reads each gyro output and writes the opposite into its
          * offset register. The output already holds the old offset, so new = old - output; the
          * output is taken at the filter's full resolution, before quantisation [U]. */
         for (i = 0; i < 3u; i++) {
@@ -712,7 +712,7 @@ static unsigned op_burst(void *model, uint16_t *words, unsigned max, uint64_t t)
     for (i = 0; i < n && i < max; i++) {
         words[i] = read_word(m, (uint8_t)(REG_SUPPLY + 2u * i));
     }
-    /* ADIS16405 burst bug (EZ forum, sensors.md §3.6): with a negative XGYRO_OFF, after the
+    /* ADIS16405 burst bug (EZ forum, docs/drivers-adis-imu.md §3): with a negative XGYRO_OFF, after the
      * first burst negative X-gyro values lose bit 13. Off by default. */
     if (m->cfg.burst_bug && m->cfg.variant == SIM_ADIS16405 && m->bursts_served > 0u &&
         (m->reg[IDX(REG_GYRO_OFF)] & 0x1000u) && (words[1] & 0x2000u)) {
@@ -759,7 +759,7 @@ int sim_adis_imu_init(struct sim_adis_imu *m, const struct sim_adis_imu_cfg *cfg
     m->dr_pin = SIM_ADIS_IMU_NO_PIN;
     now = m->clk->now_ns;
 
-    /* Defaults (sensors.md §3.2, B5/B6): MSC_CTRL 0x0006, SMPL_PRD 0x0001, SENS_AVG 0x0402,
+    /* Defaults (docs/drivers-adis-imu.md §1.3, B5/B6): MSC_CTRL 0x0006, SMPL_PRD 0x0001, SENS_AVG 0x0402,
      * SIF 0x0800 on the 1640x; FLASH_CNT starts at 0 [U]. */
     m->reg[IDX(REG_PROD_ID)] = v->prod_id;
     m->reg[IDX(REG_MSC_CTRL)] = 0x0006u;

@@ -1,7 +1,7 @@
 /*
  * sca3000_model.c - register-level SCA3000 model (see sim/sca3000.h for the behaviour and its
- * assumptions). Sources: ../shared/reference/sensors.md section 1 (register map 1.3, alignment
- * 1.4, indirect registers 1.5, modes and ring buffer 1.6).
+ * assumptions). Sources: docs/drivers-sca3000.md (registers used, protocol, the model:
+ * register map, alignment, indirect registers, modes and ring buffer).
  */
 #include "inclino/sim/sca3000.h"
 #include "inclino/sim/part.h"
@@ -9,7 +9,7 @@
 #include <stddef.h>
 #include <string.h>
 
-/* Direct register addresses (sensors.md 1.3). */
+/* Direct register addresses (docs/drivers-sca3000.md, Registers used). */
 enum {
     R_REVID = 0x00,
     R_STATUS = 0x02,
@@ -32,7 +32,7 @@ enum {
     R_CTRL_DATA = 0x22,
 };
 
-/* Indirect registers (CTRL_SEL values, sensors.md 1.5). */
+/* Indirect registers (CTRL_SEL values, docs/drivers-sca3000.md, Registers used). */
 enum {
     I_I2C_DISABLE = 0x01,
     I_MD_CTRL = 0x02,
@@ -56,10 +56,10 @@ enum {
 #define INT_RING_3_4 0x80u
 #define INT_RING_1_2 0x40u
 
-/* Sensitivity in g per LSB (sensors.md 1.1: 0.75, 1, 2, 6.25 mg/LSB; Linux scale / 9.81). */
+/* Sensitivity in g per LSB (docs/drivers-sca3000.md, Conversions: 0.75, 1, 2, 6.25 mg/LSB). */
 static const double lsb_g[4] = {0.00075, 0.001, 0.002, 0.00625};
 
-/* Output data rate in mHz per variant and MODE[1:0] 0..2 (sensors.md 1.6); 0 = no such mode. */
+/* Output data rate in mHz per variant and MODE[1:0] 0..2 (docs/drivers-sca3000.md, The model); 0 = no such mode. */
 static const uint32_t odr_mhz[4][3] = {
     {250000u, 250000u, 0u},     /* D01: normal, bypass */
     {125000u, 62500u, 0u},      /* E02: normal, narrow (ODR halved) */

@@ -2,7 +2,7 @@
  * sim/adis16255.h - register-level model of the ADIS16250/ADIS16255 gyroscope on the simulated
  * board, on top of the shared ADIS protocol core (sim/adis_core.h).
  *
- * Written from sensors.md §2 and the datasheet pages it cites (ADIS16250/55 Rev B pp. 11, 12,
+ * Written from the facts in docs/drivers-adis16255.md and the datasheet pages it cites (ADIS16250/55 Rev B pp. 11, 12,
  * 15), not from the driver. Where a fact is [U] the model takes a stated choice (listed in
  * docs/drivers-adis16255.md, "Model"); time constants of the part are in struct
  * sim_adis16255_times and can be changed by a test.

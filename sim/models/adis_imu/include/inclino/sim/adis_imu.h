@@ -1,7 +1,7 @@
 /*
  * sim/adis_imu.h - simulated ADIS1636x (16360/62/64/65) and ADIS1640x (16400/16405) IMU.
  *
- * Written from ../shared/reference/sensors.md §3 and seed 003, not from the driver. The SPI
+ * Written from the part's facts in docs/drivers-adis-imu.md (§1-§3), not from the driver. The SPI
  * protocol (pipelined reads, byte writes, busy -> garbage, burst <= 1 MHz) is the shared core
  * (sim/adis_core.h); this model is the part behind it:
  *
@@ -62,7 +62,7 @@ struct sim_adis_imu_cfg {
     const struct sim_error_model *error; /* NULL: an ideal part */
     uint64_t seed;                       /* garbage words of the core */
     bool power_on_busy;                  /* busy for the start-up time after init (real part) */
-    bool burst_bug;                      /* ADIS16405 burst bug of sensors.md §3.6 (default off) */
+    bool burst_bug;                      /* ADIS16405 burst bug (drivers-adis-imu.md §3) */
     const char *name;                    /* for violation reports; NULL: the part's name */
 };
 
@@ -174,7 +174,7 @@ void sim_adis_imu_part(struct sim_adis_imu *m, struct sim_part *p);
 #define SIM_ADIS_IMU_AUTONULL_MS 50u
 #define SIM_ADIS_IMU_FACTORY_RESTORE_MS 50u
 #define SIM_ADIS_IMU_FLASH_UPDATE_MS 100u
-#define SIM_ADIS_IMU_PRECISION_AUTONULL_MS 30000u /* seed 003 */
+#define SIM_ADIS_IMU_PRECISION_AUTONULL_MS 30000u /* docs/drivers-adis-imu.md §3 */
 #define SIM_ADIS_IMU_SELF_TEST_MS 12u
 
 #ifdef __cplusplus

@@ -2,7 +2,7 @@
  * sim/sca3000.h - register-level model of the Murata/VTI SCA3000 3-axis accelerometer
  * (variants D01, E02, E04, E05), behind the pin-level SPI slave of sim/spi_slave.h.
  *
- * Written from ../shared/reference/sensors.md section 1 (and its sources), not from the driver.
+ * Written from the part's facts in docs/drivers-sca3000.md, not from the driver.
  * Every behaviour the fact sheet leaves open is a stated assumption here and in
  * docs/drivers-sca3000.md ("The model"); the main ones:
  *
@@ -32,7 +32,7 @@
  *   violation) on a write to a reserved address, on a write that changes protected bits (MODE
  *   0x28, INT_MASK 0x1C, MD_CTRL 0xC0) and on an OUT_CTRL write that clears any of bits[7:5]
  *   ("the device will not function"). sim_sca3000_power_cycle() recovers.
- * Measurement. Samples at the output data rate of the variant and MODE[1:0] (sensors.md 1.6) in
+ * Measurement. Samples at the output data rate of the variant and MODE[1:0] (docs/drivers-sca3000.md) in
  *   virtual time: physics hook (or the static input) -> error-model hook -> scale (mg/LSB 0.75,
  *   1, 2, 6.25) -> saturation at the range (default: the 13-bit code range; sim cfg range_g) ->
  *   13-bit two's complement in bits[15:3]. Temperature (D01 only; 0 on the others): 9 bits in
