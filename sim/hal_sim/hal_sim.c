@@ -167,3 +167,86 @@ int hal_sim_init(struct hal_sim *port, struct sim_clock *clk, struct sim_pinbus 
     out->ctx = port;
     return INC_OK;
 }
+
+/* ---- the time-only HAL ---- */
+
+static void t_pin_write(void *ctx, hal_pin_t pin, bool level)
+{
+    struct hal_sim_time *t = ctx;
+    (void)pin;
+    (void)level;
+    t->pin_writes++;
+}
+
+static bool t_pin_read(void *ctx, hal_pin_t pin)
+{
+    (void)ctx;
+    (void)pin;
+    return false;
+}
+
+static uint64_t t_now(void *ctx)
+{
+    return ((struct hal_sim_time *)ctx)->now_ns;
+}
+
+static void t_delay(void *ctx, uint32_t ns)
+{
+    struct hal_sim_time *t = ctx;
+    t->now_ns += ns;
+    t->delays++;
+}
+
+static int t_attach(void *ctx, hal_pin_t pin, enum hal_edge edge, hal_irq_cb cb, void *arg)
+{
+    (void)ctx;
+    (void)pin;
+    (void)edge;
+    (void)cb;
+    (void)arg;
+    return INC_OK;
+}
+
+static int t_wait(void *ctx, uint64_t deadline_ns)
+{
+    struct hal_sim_time *t = ctx;
+    t->waits++;
+    if (deadline_ns > t->now_ns) {
+        t->now_ns = deadline_ns;
+    }
+    return INC_ERR_TIMEOUT;
+}
+
+static uint32_t t_enter(void *ctx)
+{
+    struct hal_sim_time *t = ctx;
+    return t->crit_depth++;
+}
+
+static void t_exit(void *ctx, uint32_t key)
+{
+    struct hal_sim_time *t = ctx;
+    t->crit_depth = key;
+}
+
+static const struct hal_ops hal_sim_time_ops = {
+    .pin_write = t_pin_write,
+    .pin_read = t_pin_read,
+    .now_ns = t_now,
+    .delay_ns = t_delay,
+    .irq_attach = t_attach,
+    .irq_wait = t_wait,
+    .crit_enter = t_enter,
+    .crit_exit = t_exit,
+};
+
+int hal_sim_time_init(struct hal_sim_time *t, struct hal *out)
+{
+    if (t == NULL || out == NULL) {
+        return INC_ERR_NULL;
+    }
+    memset(t, 0, sizeof(*t));
+    out->ops = &hal_sim_time_ops;
+    out->ctx = t;
+    return INC_OK;
+}

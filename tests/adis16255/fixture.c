@@ -1,6 +1,8 @@
 /* fixture.c - see fixture.h. */
 #include "fixture.h"
 
+#include "inclino/sim/bench.h"
+
 #include <string.h>
 
 struct fx fx;
@@ -27,19 +29,7 @@ void fx_setup_times(bool with_part, const struct sim_adis16255_times *times)
     sim_board_init(&fx.board);
     fx.has_part = with_part;
     if (with_part) {
-        memset(&mc, 0, sizeof(mc));
-        mc.name = "adis16255";
-        mc.bus = &fx.board.bus;
-        mc.cs = SIM_BOARD_CS(0);
-        mc.sclk = SIM_BOARD_SCLK;
-        mc.mosi = SIM_BOARD_MOSI;
-        mc.miso = SIM_BOARD_MISO;
-        mc.dio0 = (int)SIM_BOARD_DR(0);
-        mc.dio1 = (int)SIM_BOARD_DR(1);
-        mc.axis = 2;
-        mc.log = &fx.board.log;
-        mc.seed = 16255;
-        mc.endurance = 0x0010;
+        sim_bench_adis16255_cfg(&fx.board, 0, &mc);
         if (times != NULL) {
             mc.times = *times;
         }

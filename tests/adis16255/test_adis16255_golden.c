@@ -10,7 +10,7 @@
  */
 #include "fixture.h"
 
-#include "inclino/sim/trace.h"
+#include "inclino/sim/golden.h"
 
 #include <string.h>
 
@@ -21,7 +21,6 @@
 #define INIT_READ GOLDEN_DIR "/adis16255_init_read.trace"
 #define COMMANDS GOLDEN_DIR "/adis16255_commands.trace"
 
-static struct trace_rec rec;
 static struct trace_replay rp;
 static struct adis16255 drv;
 
@@ -122,30 +121,48 @@ static void live_setup(int which)
     fx_input(which == 0 ? 102.0 : 2.0, 40.0, 5.0);
 }
 
-static void run_live(int which, struct results *r, const char *record_to)
+static const struct sim_golden goldens[2] = {
+    {INIT_READ,
+     {"ADIS16255 driver: init and read sequence", "model: 102 dps, 40 C, 5.0 V",
+      "regenerate: test_adis16255_golden --regenerate", NULL}},
+    {COMMANDS,
+     {"ADIS16255 driver: commands", "model: at rest, 2 dps bias, 40 C, 5.0 V",
+      "regenerate: test_adis16255_golden --regenerate", NULL}},
+};
+
+/* One sequence of the golden cases, with the range it configures. */
+struct run {
+    int which;
+    enum adis16255_range range;
+    struct results *r;
+};
+
+static void seq(void *ctx, const struct spi_bus *bus, const struct hal *hal)
 {
-    const struct spi_bus *bus = &fx.board.spi.bus;
-    const struct hal *hal = &fx.board.hal;
-    live_setup(which);
-    if (record_to != NULL) {
-        REQUIRE(trace_rec_open(&rec, record_to, &fx.board.spi.bus, &fx.board.hal) == 0);
-        CHECK_OK(trace_rec_comment(&rec, which == 0 ? "ADIS16255 driver: init and read sequence"
-                                                    : "ADIS16255 driver: commands"));
-        CHECK_OK(trace_rec_comment(&rec, which == 0 ? "model: 102 dps, 40 C, 5.0 V"
-                                                    : "model: at rest, 2 dps bias, 40 C, 5.0 V"));
-        CHECK_OK(trace_rec_comment(&rec, "regenerate: test_adis16255_golden --regenerate"));
-        bus = &rec.bus;
-        hal = &rec.hal;
-    }
-    if (which == 0) {
-        seq_init_read(bus, hal, ADIS16255_RANGE_320, r);
+    const struct run *run = ctx;
+    if (run->which == 0) {
+        seq_init_read(bus, hal, run->range, run->r);
     } else {
-        seq_commands(bus, hal, r);
+        seq_commands(bus, hal, run->r);
     }
-    if (record_to != NULL) {
-        CHECK_OK(trace_rec_close(&rec));
+}
+
+static void run_live(int which, struct results *r, bool record)
+{
+    struct run run = {which, ADIS16255_RANGE_320, r};
+    live_setup(which);
+    if (record) {
+        CHECK_OK(sim_golden_record(&goldens[which], &fx.board, seq, &run));
+    } else {
+        seq(&run, &fx.board.spi.bus, &fx.board.hal);
     }
     CHECK_NO_VIOLATIONS();
+}
+
+static int replay(int which, enum adis16255_range range, struct results *r)
+{
+    struct run run = {which, range, r};
+    return sim_golden_replay(&goldens[which], &rp, seq, &run);
 }
 
 static void check_same(const struct results *a, const struct results *b)
@@ -161,9 +178,9 @@ static void check_same(const struct results *a, const struct results *b)
 static void test_init_read(void)
 {
     static const int err[10] = {0, 0, 0, 0, 0, 0, 0, INC_ERR_STALE, 0, 0};
-    struct results live, replay;
+    struct results live, again;
     unsigned i;
-    run_live(0, &live, NULL);
+    run_live(0, &live, false);
     /* The live results themselves: 102 °/s -> 1392 counts -> 101.978 °/s; 40 °C -> 103. */
     REQUIRE(live.n == 10u);
     for (i = 0; i < 10u; i++) {
@@ -173,20 +190,15 @@ static void test_init_read(void)
     CHECK_EQ_INT(live.val[2], 2619205);
     CHECK_EQ_INT(live.val[5], 6683232);
     CHECK_EQ_INT(live.val[8], 327680);
-    REQUIRE(trace_replay_open(&rp, INIT_READ) == 0);
-    seq_init_read(&rp.bus, &rp.hal, ADIS16255_RANGE_320, &replay);
-    CHECK_OK(trace_replay_finish(&rp));
-    if (rp.status != INC_OK) {
-        printf("replay: %s\n", trace_replay_message(&rp));
-    }
-    check_same(&live, &replay);
+    CHECK_OK(replay(0, ADIS16255_RANGE_320, &again));
+    check_same(&live, &again);
 }
 
 static void test_commands(void)
 {
-    struct results live, replay;
+    struct results live, again;
     unsigned i;
-    run_live(1, &live, NULL);
+    run_live(1, &live, false);
     REQUIRE(live.n == 10u);
     for (i = 0; i < 10u; i++) {
         CHECK_EQ_INT(live.err[i], 0);
@@ -194,13 +206,8 @@ static void test_commands(void)
     CHECK_EQ_INT(live.val[2], adis16255_gyro_off_dps_q16(0xF93)); /* -109: the 2 °/s bias */
     CHECK_EQ_INT(live.val[8], adis16255_gyro_off_dps_q16(0xF93)); /* from flash after reset */
     CHECK_EQ_INT(live.val[9], 0);                                 /* bias nulled */
-    REQUIRE(trace_replay_open(&rp, COMMANDS) == 0);
-    seq_commands(&rp.bus, &rp.hal, &replay);
-    CHECK_OK(trace_replay_finish(&rp));
-    if (rp.status != INC_OK) {
-        printf("replay: %s\n", trace_replay_message(&rp));
-    }
-    check_same(&live, &replay);
+    CHECK_OK(replay(1, ADIS16255_RANGE_320, &again));
+    check_same(&live, &again);
 }
 
 /* A driver configured differently (±160 °/s) sends another SENS_AVG: the replay stops there,
@@ -208,22 +215,20 @@ static void test_commands(void)
 static void test_divergence(void)
 {
     struct results r;
-    REQUIRE(trace_replay_open(&rp, INIT_READ) == 0);
-    seq_init_read(&rp.bus, &rp.hal, ADIS16255_RANGE_160, &r);
+    CHECK_ERR(replay(0, ADIS16255_RANGE_160, &r), INC_ERR_MISMATCH);
     CHECK_EQ_INT(r.n, 1);
     CHECK_EQ_INT(r.err[0], INC_ERR_MISMATCH);
     CHECK(!drv.initialised);
-    CHECK_ERR(trace_replay_finish(&rp), INC_ERR_MISMATCH);
     printf("expected divergence: %s\n", trace_replay_message(&rp));
     CHECK(strstr(trace_replay_message(&rp), "expected MOSI B904, driver sent B902") != NULL);
 }
 
 int main(int argc, char **argv)
 {
-    if (argc > 1 && strcmp(argv[1], "--regenerate") == 0) {
+    if (sim_golden_regenerate(argc, argv)) {
         struct results r;
-        run_live(0, &r, INIT_READ);
-        run_live(1, &r, COMMANDS);
+        run_live(0, &r, true);
+        run_live(1, &r, true);
         return unit_report();
     }
     UNIT_RUN(test_init_read);

@@ -1,6 +1,8 @@
 /* fixture.c - see fixture.h. */
 #include "fixture.h"
 
+#include "inclino/sim/bench.h"
+
 #include <stdio.h>
 #include <string.h>
 
@@ -10,17 +12,7 @@ void fx_prepare(enum sim_adis_imu_variant v)
 {
     memset(&fx, 0, sizeof(fx));
     sim_board_init(&fx.board);
-    fx.part_cfg.variant = v;
-    fx.part_cfg.bus = &fx.board.bus;
-    fx.part_cfg.cs = SIM_BOARD_CS(0);
-    fx.part_cfg.sclk = SIM_BOARD_SCLK;
-    fx.part_cfg.mosi = SIM_BOARD_MOSI;
-    fx.part_cfg.miso = SIM_BOARD_MISO;
-    fx.part_cfg.dio1 = SIM_BOARD_DR(0);
-    fx.part_cfg.dio2 = SIM_BOARD_DR(1);
-    fx.part_cfg.log = &fx.board.log;
-    fx.part_cfg.seed = 1234u + (uint64_t)v;
-    fx.part_cfg.power_on_busy = true;
+    sim_bench_adis_imu_cfg(&fx.board, 0, v, &fx.part_cfg);
     fx.cfg.hal = &fx.board.hal;
     fx.cfg.bus = &fx.board.spi.bus;
     fx.cfg.cs = SIM_BOARD_CS(0);

@@ -13,7 +13,7 @@
  *   build/host/tests/adis_imu/test_adis_imu_golden --regenerate
  */
 #include "fixture.h"
-#include "inclino/sim/trace.h"
+#include "inclino/sim/golden.h"
 #include "unit.h"
 
 #include <stdio.h>
@@ -30,7 +30,6 @@ struct result {
 };
 
 static struct adis_imu imu;
-static struct trace_rec rec;
 static struct trace_replay rp;
 static struct result live, replayed;
 
@@ -72,6 +71,18 @@ static void golden_path(enum sim_adis_imu_variant v, char *buf, size_t len)
     snprintf(buf, len, "%s/%s.trace", GOLDEN_DIR, v == SIM_ADIS16405 ? "adis16405" : "adis16364");
 }
 
+/* The scenario of variant v as a golden sequence. */
+struct run {
+    enum sim_adis_imu_variant v;
+    struct result *r;
+};
+
+static void seq(void *ctx, const struct spi_bus *bus, const struct hal *hal)
+{
+    const struct run *run = ctx;
+    run_scenario(bus, hal, run->v, run->r);
+}
+
 /* The standard input of the driver test (10, -20.5, 123.45 deg/s ...), on the live part. */
 static void live_part(enum sim_adis_imu_variant v)
 {
@@ -96,19 +107,14 @@ static void live_part(enum sim_adis_imu_variant v)
 /* Record the scenario from the live part to path. */
 static int record(enum sim_adis_imu_variant v, const char *path, struct result *r)
 {
-    int err;
+    struct sim_golden g = {path,
+                           {v == SIM_ADIS16405
+                                ? "ADIS16405 (sim): init, burst, register reads, offset, low power"
+                                : "ADIS16364 (sim): init, burst, register reads, offset, low power",
+                            NULL}};
+    struct run run = {v, r};
     live_part(v);
-    err = trace_rec_open(&rec, path, &fx.board.spi.bus, &fx.board.hal);
-    if (err != INC_OK) {
-        return err;
-    }
-    trace_rec_comment(&rec,
-                      v == SIM_ADIS16405
-                          ? "ADIS16405 (sim): init, burst, register reads, offset, low power"
-                          : "ADIS16364 (sim): init, burst, register reads, offset, low power");
-    run_scenario(&rec.bus, &rec.hal, v, r);
-    err = trace_rec_close(&rec);
-    return fx_violations() == 0u ? err : INC_ERR_TIMING;
+    return sim_golden_record(&g, &fx.board, seq, &run);
 }
 
 /* What the driver must make of the traffic, worked out from the datasheet scales. */
@@ -144,12 +150,9 @@ static void check_result(enum sim_adis_imu_variant v, const struct result *r)
 
 static void replay(enum sim_adis_imu_variant v, const char *path, struct result *r)
 {
-    REQUIRE(trace_replay_open(&rp, path) == INC_OK);
-    run_scenario(&rp.bus, &rp.hal, v, r);
-    CHECK_OK(trace_replay_finish(&rp));
-    if (trace_replay_message(&rp)[0] != '\0') {
-        printf("replay %s: %s\n", path, trace_replay_message(&rp));
-    }
+    struct sim_golden g = {path, {NULL}};
+    struct run run = {v, r};
+    CHECK_OK(sim_golden_replay(&g, &rp, seq, &run));
 }
 
 /* The committed traces replay to the exact values. */
@@ -205,7 +208,7 @@ static void test_divergence_is_reported(void)
 
 int main(int argc, char **argv)
 {
-    if (argc > 1 && strcmp(argv[1], "--regenerate") == 0) {
+    if (sim_golden_regenerate(argc, argv)) {
         char path[512];
         int err;
         golden_path(SIM_ADIS16405, path, sizeof(path));

@@ -7,7 +7,7 @@
  */
 #include "inclino/adis.h"
 #include "inclino/sim/adis_imu.h"
-#include "inclino/sim/board.h"
+#include "inclino/sim/bench.h"
 #include "unit.h"
 
 #include <string.h>
@@ -24,17 +24,10 @@ static void setup_cfg(enum sim_adis_imu_variant v, const struct sim_physics *phy
 {
     struct sim_adis_imu_cfg c;
     struct spi_dev_cfg dc = {SIM_BOARD_CS(0), SPI_MODE_3, 16, {500, 100, 100, 10000, 0}};
-    memset(&c, 0, sizeof(c));
     sim_board_init(&board);
-    c.variant = v;
-    c.bus = &board.bus;
-    c.cs = SIM_BOARD_CS(0);
-    c.sclk = SIM_BOARD_SCLK;
-    c.mosi = SIM_BOARD_MOSI;
-    c.miso = SIM_BOARD_MISO;
-    c.dio1 = SIM_BOARD_DR(0);
+    sim_bench_adis_imu_cfg(&board, 0, v, &c);
     c.dio2 = SIM_ADIS_IMU_NO_PIN;
-    c.log = &board.log;
+    c.power_on_busy = false;
     c.physics = phys;
     c.burst_bug = bug;
     c.seed = 5;

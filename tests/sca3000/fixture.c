@@ -1,6 +1,8 @@
 /* fixture.c - see fixture.h. */
 #include "fixture.h"
 
+#include "inclino/sim/bench.h"
+
 #include <stdio.h>
 #include <string.h>
 
@@ -26,16 +28,8 @@ int fx_setup_part(enum sim_sca3000_variant v, uint8_t revid)
     if (err != 0) {
         return err;
     }
-    memset(&pc, 0, sizeof(pc));
-    pc.bus = &fx.board.bus;
-    pc.cs = FX_CS;
-    pc.sclk = SIM_BOARD_SCLK;
-    pc.mosi = SIM_BOARD_MOSI;
-    pc.miso = SIM_BOARD_MISO;
-    pc.int_pin = FX_INT;
-    pc.variant = v;
+    sim_bench_sca3000_cfg(&fx.board, 0, v, &pc); /* cs0 = FX_CS, INT on dr0 = FX_INT */
     pc.revid = revid;
-    pc.log = &fx.board.log;
     err = sim_sca3000_init(&fx.part, &pc);
     if (err != 0) {
         return err;

@@ -9,7 +9,7 @@
  *                                     trace is the driver's bus contract)
  */
 #include "fixture.h"
-#include "inclino/sim/trace.h"
+#include "inclino/sim/golden.h"
 
 #include <stdio.h>
 #include <string.h>
@@ -18,7 +18,6 @@
 #error "GOLDEN_DIR must be defined"
 #endif
 
-static struct trace_rec rec;
 static struct trace_replay rp;
 
 struct results {
@@ -82,16 +81,33 @@ static void seq_e05_ring(struct results *r)
 }
 
 struct golden {
-    const char *file;
+    struct sim_golden g;
     enum sim_sca3000_variant variant;
     void (*seq)(struct results *r);
 };
 
+#define COMMENTS                                                                  \
+    {                                                                             \
+        "SCA3000 driver against the model (tests/sca3000/test_sca3000_golden.c)", \
+            "input: 0.5, -0.25, 1.0 g, 25 degC; SCLK 500 kHz, mode 3", NULL       \
+    }
+
 static const struct golden goldens[] = {
-    {GOLDEN_DIR "/d01_init_read.trace", SIM_SCA3000_D01, seq_d01},
-    {GOLDEN_DIR "/e04_init_read.trace", SIM_SCA3000_E04, seq_e04},
-    {GOLDEN_DIR "/e05_ring.trace", SIM_SCA3000_E05, seq_e05_ring},
+    {{GOLDEN_DIR "/d01_init_read.trace", COMMENTS}, SIM_SCA3000_D01, seq_d01},
+    {{GOLDEN_DIR "/e04_init_read.trace", COMMENTS}, SIM_SCA3000_E04, seq_e04},
+    {{GOLDEN_DIR "/e05_ring.trace", COMMENTS}, SIM_SCA3000_E05, seq_e05_ring},
 };
+
+/* A sequence on the bus and HAL of the harness: the driver configured as on the board, with
+ * them instead. */
+static void seq(void *ctx, const struct spi_bus *bus, const struct hal *hal)
+{
+    const struct golden *g = ctx;
+    fx.cfg.bus = bus;
+    fx.cfg.hal = hal;
+    memset(&got, 0, sizeof(got));
+    g->seq(&got);
+}
 
 static int record(const struct golden *g)
 {
@@ -100,44 +116,23 @@ static int record(const struct golden *g)
         return err;
     }
     fx_input(0.5, -0.25, 1.0, 25.0);
-    err = trace_rec_open(&rec, g->file, &fx.board.spi.bus, &fx.board.hal);
-    if (err != 0) {
-        return err;
-    }
-    trace_rec_comment(&rec,
-                      "SCA3000 driver against the model (tests/sca3000/test_sca3000_golden.c)");
-    trace_rec_comment(&rec, "input: 0.5, -0.25, 1.0 g, 25 degC; SCLK 500 kHz, mode 3");
-    fx.cfg.bus = &rec.bus;
-    fx.cfg.hal = &rec.hal;
-    memset(&got, 0, sizeof(got));
-    g->seq(&got);
-    err = trace_rec_close(&rec);
-    if (got.err != 0 || err != 0 || !fx_log_clean()) {
-        printf("recording %s failed: %s\n", g->file, inc_err_name(got.err != 0 ? got.err : err));
+    err = sim_golden_record(&g->g, &fx.board, seq, (void *)g);
+    if (got.err != 0 || err != 0) {
+        printf("recording %s failed: %s\n", g->g.path, inc_err_name(got.err != 0 ? got.err : err));
         return -1;
     }
-    printf("recorded %s\n", g->file);
+    printf("recorded %s\n", g->g.path);
     return 0;
 }
 
 /* Replay a golden trace to the driver configured as on the board (no model behind it). */
 static int replay(const struct golden *g, uint8_t expected_revid)
 {
-    int fin;
-    if (fx_setup_part(g->variant, 0) != 0 || trace_replay_open(&rp, g->file) != 0) {
-        printf("cannot open %s\n", g->file);
+    if (fx_setup_part(g->variant, 0) != 0) {
         return -100;
     }
-    fx.cfg.bus = &rp.bus;
-    fx.cfg.hal = &rp.hal;
     fx.cfg.expected_revid = expected_revid;
-    memset(&got, 0, sizeof(got));
-    g->seq(&got);
-    fin = trace_replay_finish(&rp);
-    if (fin != 0) {
-        printf("replay of %s: %s\n", g->file, trace_replay_message(&rp));
-    }
-    return fin;
+    return sim_golden_replay(&g->g, &rp, seq, (void *)g);
 }
 
 static void test_replay_d01(void)
@@ -188,7 +183,7 @@ static void test_changed_driver_is_caught(void)
 
 int main(int argc, char **argv)
 {
-    if (argc > 1 && strcmp(argv[1], "--regenerate") == 0) {
+    if (sim_golden_regenerate(argc, argv)) {
         unsigned i;
         for (i = 0; i < sizeof(goldens) / sizeof(goldens[0]); i++) {
             if (record(&goldens[i]) != 0) {

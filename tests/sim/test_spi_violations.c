@@ -3,7 +3,7 @@
  * reported with what was measured and what was required, and the master gets what a real part
  * would give it (wrong bits, a flagged frame).
  */
-#include "inclino/sim/board.h"
+#include "inclino/sim/bench.h"
 #include "inclino/sim/loopback.h"
 #include "inclino/spi.h"
 #include "unit.h"
@@ -39,19 +39,13 @@ static void setup(uint8_t part_mode, uint8_t part_bits, uint8_t master_mode, uin
 {
     struct sim_loopback_cfg lc;
     struct spi_dev_cfg dc;
-    memset(&lc, 0, sizeof(lc));
     sim_board_init(&board);
+    sim_bench_loopback_cfg(&board, 0, &lc);
     lc.name = "slowpart";
-    lc.bus = &board.bus;
-    lc.cs = SIM_BOARD_CS(0);
-    lc.sclk = SIM_BOARD_SCLK;
-    lc.mosi = SIM_BOARD_MOSI;
-    lc.miso = SIM_BOARD_MISO;
     lc.mode = part_mode;
     lc.bits = part_bits;
     lc.timing = limits;
     lc.first = 0x5AA5;
-    lc.log = &board.log;
     sim_loopback_init(&part, &lc);
     dc.cs = SIM_BOARD_CS(0);
     dc.mode = master_mode;

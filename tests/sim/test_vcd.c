@@ -3,7 +3,7 @@
  * back by a small VCD parser and SPI decoder written here, independent of the writer (the
  * host-only test sim_vcd_sigrok checks the same with sigrok's own decoder).
  */
-#include "inclino/sim/board.h"
+#include "inclino/sim/bench.h"
 #include "inclino/sim/loopback.h"
 #include "inclino/sim/vcd.h"
 #include "inclino/spi.h"
@@ -122,18 +122,12 @@ static void run_case(unsigned mode, unsigned bits, enum spi_cs_policy cs)
     unsigned i;
 
     REQUIRE(sim_board_init(&board) == 0);
-    memset(&lc, 0, sizeof(lc));
-    lc.bus = &board.bus;
-    lc.cs = SIM_BOARD_CS(0);
-    lc.sclk = SIM_BOARD_SCLK;
-    lc.mosi = SIM_BOARD_MOSI;
-    lc.miso = SIM_BOARD_MISO;
+    sim_bench_loopback_cfg(&board, 0, &lc);
     lc.mode = (uint8_t)mode;
     lc.bits = (uint8_t)bits;
     lc.timing.min_period_ns = 500;
     lc.timing.miso_delay_ns = 60;
     lc.first = (uint16_t)(bits == 16u ? 0xA5C3u : 0xA5u);
-    lc.log = &board.log;
     REQUIRE(sim_loopback_init(&part, &lc) == 0);
     dc.cs = SIM_BOARD_CS(0);
     dc.mode = (uint8_t)mode;

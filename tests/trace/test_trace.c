@@ -5,7 +5,7 @@
  * rejects malformed trace files naming the line. A golden trace in tests/trace/golden is replayed
  * too, so the format itself cannot drift.
  */
-#include "inclino/sim/board.h"
+#include "inclino/sim/bench.h"
 #include "inclino/sim/loopback.h"
 #include "inclino/sim/trace.h"
 #include "inclino/sim/vcd.h"
@@ -47,18 +47,12 @@ static void pulse_off(void *arg, uint64_t t)
 static void setup_board(void)
 {
     struct sim_loopback_cfg lc;
-    memset(&lc, 0, sizeof(lc));
     sim_board_init(&board);
-    lc.bus = &board.bus;
-    lc.cs = SIM_BOARD_CS(1);
-    lc.sclk = SIM_BOARD_SCLK;
-    lc.mosi = SIM_BOARD_MOSI;
-    lc.miso = SIM_BOARD_MISO;
+    sim_bench_loopback_cfg(&board, 1, &lc);
     lc.mode = 3;
     lc.bits = 16;
     lc.timing.min_period_ns = 500;
     lc.first = 0xA5C3;
-    lc.log = &board.log;
     sim_loopback_init(&part, &lc);
     dr_dev = sim_pinbus_add_device(&board.bus);
     /* Data-ready pulses at 50 us and 200 us. */

@@ -31,6 +31,9 @@ static void drive_miso(struct sim_spi_slave *s, bool level, uint64_t t)
 {
     unsigned slot;
     int h;
+    if (s->miso_stuck != SIM_SPI_MISO_OK) {
+        level = s->miso_stuck == SIM_SPI_MISO_STUCK_HIGH; /* injected fault (sim/part.h) */
+    }
     if (s->cfg.timing.miso_delay_ns == 0 || s->cfg.bus->clk == NULL) {
         sim_pinbus_device_drive(s->cfg.bus, s->dev, s->cfg.miso, level);
         return;
@@ -97,7 +100,7 @@ static void cs_fall(struct sim_spi_slave *s, uint64_t t)
     }
     s->ever_selected = true;
     s->frames++;
-    s->out = s->cfg.ops->frame_begin(s->cfg.model, s->flags, t);
+    s->out = (uint16_t)(s->cfg.ops->frame_begin(s->cfg.model, s->flags, t) ^ s->out_xor);
     s->out_bit = (uint8_t)(s->cfg.bits - 1u);
     /* The part drives its MSB as soon as it is selected; with CPHA = 1 the first leading edge
      * re-drives the same bit, so the pointer only moves on for CPHA = 0. */
@@ -139,7 +142,7 @@ static void sample(struct sim_spi_slave *s, uint64_t t)
         s->total_words++;
         s->bits_in = 0;
         s->in = 0;
-        s->out = s->cfg.ops->word(s->cfg.model, w, idx, s->flags, t);
+        s->out = (uint16_t)(s->cfg.ops->word(s->cfg.model, w, idx, s->flags, t) ^ s->out_xor);
         s->out_bit = (uint8_t)(s->cfg.bits - 1u);
     }
 }

@@ -6,6 +6,7 @@
  * Choices for [U] facts are marked [U] and listed in docs/drivers-adis16255.md ("Model").
  */
 #include "inclino/sim/adis16255.h"
+#include "inclino/sim/part.h"
 
 #include <math.h>
 #include <string.h>
@@ -42,6 +43,7 @@ enum {
 #define ST_SPI_FAIL 0x0008u
 #define ST_OVERRANGE 0x0010u
 #define ST_SELF_TEST 0x0020u
+#define ST_ALARM1 0x0100u
 
 #define MSC_DR_LINE 0x0001u
 #define MSC_DR_HIGH 0x0002u
@@ -136,7 +138,7 @@ static unsigned taps(const struct sim_adis16255 *m)
 
 uint16_t sim_adis16255_status(const struct sim_adis16255 *m)
 {
-    return (uint16_t)(m->live | m->latched | (m->st_error ? ST_SELF_TEST : 0u));
+    return (uint16_t)(m->live | m->latched | m->fault_status | (m->st_error ? ST_SELF_TEST : 0u));
 }
 
 /* ------------------------------------------------------------------ data-ready pins */
@@ -416,7 +418,7 @@ static void self_test_done(void *arg, uint64_t t)
 
 /* ------------------------------------------------------------------ SPI hooks */
 
-static uint16_t m_read(void *model, uint8_t addr, uint64_t t)
+static uint16_t m_read_reg(void *model, uint8_t addr, uint64_t t)
 {
     struct sim_adis16255 *m = model;
     const unsigned a = (unsigned)(addr & 0x3Eu);
@@ -443,6 +445,17 @@ static uint16_t m_read(void *model, uint8_t addr, uint64_t t)
         return 0;
     }
     return m->reg[i];
+}
+
+/* A register as the bus reads it: a stuck bit (injected) applies on top. */
+static uint16_t m_read(void *model, uint8_t addr, uint64_t t)
+{
+    struct sim_adis16255 *m = model;
+    uint16_t v = m_read_reg(model, addr, t);
+    if (m->stuck_mask != 0u && (addr & 0x3Eu) == m->stuck_addr) {
+        v = (uint16_t)((v & ~m->stuck_mask) | m->stuck_set);
+    }
+    return v;
 }
 
 static void m_write(void *model, uint8_t addr, uint8_t value, uint64_t t)
@@ -665,4 +678,94 @@ void sim_adis16255_poke(struct sim_adis16255 *m, uint8_t addr, uint16_t value)
 uint16_t sim_adis16255_flash(const struct sim_adis16255 *m, uint8_t addr)
 {
     return m != NULL ? m->flash[IDX(addr & 0x3Eu)] : 0u;
+}
+
+/* ------------------------------------------------------------------ the part interface */
+
+static void p_set_input(void *model, const struct sim_inertial_input *in)
+{
+    sim_adis16255_set_input(model, in);
+}
+
+static void p_set_physics(void *model, const struct sim_physics *p)
+{
+    sim_adis16255_set_physics(model, p);
+}
+
+static void p_set_error_model(void *model, const struct sim_error_model *e)
+{
+    sim_adis16255_set_error_model(model, e);
+}
+
+static void p_get_error_model(const void *model, struct sim_error_model *e)
+{
+    *e = ((const struct sim_adis16255 *)model)->error;
+}
+
+static struct sim_spi_slave *p_slave(void *model)
+{
+    return &((struct sim_adis16255 *)model)->core.slave;
+}
+
+#define GYRO_SCALE_FOREIGN 0x1000u /* a reserved GYRO_SCALE bit: "another part" */
+
+static int p_fault(void *model, enum sim_fault f, const struct sim_fault_arg *a, bool on)
+{
+    struct sim_adis16255 *m = model;
+    switch (f) {
+    case SIM_FAULT_WRONG_ID:
+        if (on) {
+            m->reg[IDX(R_GYRO_SCALE)] |= GYRO_SCALE_FOREIGN;
+        } else {
+            m->reg[IDX(R_GYRO_SCALE)] &= (uint16_t)~GYRO_SCALE_FOREIGN;
+        }
+        return INC_OK;
+    case SIM_FAULT_BUSY:
+        if (on) {
+            sim_adis16255_force_busy(m, a->duration_ns != 0u ? a->duration_ns : UINT64_MAX / 2u);
+        } else {
+            m->busy_until = now(m);
+        }
+        return INC_OK;
+    case SIM_FAULT_NO_DATA_READY: sim_adis16255_suppress_dr(m, on); return INC_OK;
+    case SIM_FAULT_DEVICE_ERROR:
+        m->fault_status = on ? (a->mask != 0u ? a->mask : ST_ALARM1) : 0u;
+        return INC_OK;
+    case SIM_FAULT_STUCK_BIT:
+        if (a->bit > 15u) {
+            return INC_ERR_INVAL;
+        }
+        m->stuck_addr = (uint8_t)(a->addr & 0x3Eu);
+        m->stuck_mask = on ? (uint16_t)(1u << a->bit) : 0u;
+        m->stuck_set = a->level ? m->stuck_mask : 0u;
+        return INC_OK;
+    default: return INC_ERR_UNSUPPORTED;
+    }
+}
+
+static uint16_t p_peek(const void *model, uint8_t addr)
+{
+    return sim_adis16255_peek(model, addr);
+}
+
+static void p_poke(void *model, uint8_t addr, uint16_t value)
+{
+    sim_adis16255_poke(model, addr, value);
+}
+
+const struct sim_part_ops sim_adis16255_part_ops = {
+    .kind = "adis16255",
+    .set_input = p_set_input,
+    .set_physics = p_set_physics,
+    .set_error_model = p_set_error_model,
+    .get_error_model = p_get_error_model,
+    .slave = p_slave,
+    .fault = p_fault,
+    .peek = p_peek,
+    .poke = p_poke,
+};
+
+void sim_adis16255_part(struct sim_adis16255 *m, struct sim_part *p)
+{
+    sim_part_bind(p, &sim_adis16255_part_ops, m, m != NULL ? m->clk : NULL);
 }

@@ -5,6 +5,7 @@
  * fact sheet has no confirmed value (listed in docs/unconfirmed-facts.md).
  */
 #include "inclino/sim/adis_imu.h"
+#include "inclino/sim/part.h"
 
 #include <math.h>
 #include <stddef.h>
@@ -252,7 +253,7 @@ static void dr_off(void *arg, uint64_t now)
 
 static void dr_pulse(struct sim_adis_imu *m, uint64_t now)
 {
-    if (m->dr_pin == SIM_ADIS_IMU_NO_PIN || m->dr_off_ev > 0) {
+    if (m->dr_pin == SIM_ADIS_IMU_NO_PIN || m->dr_off_ev > 0 || m->dr_suppressed) {
         return;
     }
     sim_pinbus_device_drive(m->cfg.bus, (unsigned)m->dr_dev, m->dr_pin, m->dr_active_high);
@@ -635,7 +636,7 @@ static void write_byte(struct sim_adis_imu *m, uint8_t addr, uint8_t value, uint
     }
 }
 
-static uint16_t read_word(struct sim_adis_imu *m, uint8_t even)
+static uint16_t read_word_reg(struct sim_adis_imu *m, uint8_t even)
 {
     const struct wreg *w;
     if (is_output(m, even)) {
@@ -643,14 +644,14 @@ static uint16_t read_word(struct sim_adis_imu *m, uint8_t even)
         if (m->nd & (1ull << IDX(even))) {
             v |= ND;
         }
-        if (m->diag != 0u) {
+        if ((m->diag | m->fault_diag) != 0u) {
             v |= EA;
         }
         m->nd &= ~(1ull << IDX(even)); /* ND: new since the last read of this register */
         return v;
     }
     if (even == REG_DIAG) {
-        const uint16_t d = m->diag;
+        const uint16_t d = (uint16_t)(m->diag | m->fault_diag);
         m->diag = 0; /* clears on read [U] */
         return d;
     }
@@ -665,6 +666,16 @@ static uint16_t read_word(struct sim_adis_imu *m, uint8_t even)
         return (uint16_t)sext(m->reg[IDX(even)], w->sign_bits); /* read back sign-extended (B13) */
     }
     return m->reg[IDX(even)];
+}
+
+/* A register as the bus reads it: a stuck bit (injected) applies on top. */
+static uint16_t read_word(struct sim_adis_imu *m, uint8_t even)
+{
+    uint16_t v = read_word_reg(m, even);
+    if (m->stuck_mask != 0u && even == m->stuck_addr) {
+        v = (uint16_t)((v & ~m->stuck_mask) | m->stuck_set);
+    }
+    return v;
 }
 
 static uint16_t op_read(void *model, uint8_t addr, uint64_t t)
@@ -819,6 +830,32 @@ void sim_adis_imu_set_input(struct sim_adis_imu *m, const struct sim_inertial_in
     }
 }
 
+void sim_adis_imu_set_physics(struct sim_adis_imu *m, const struct sim_physics *p)
+{
+    if (m == NULL) {
+        return;
+    }
+    if (p != NULL) {
+        m->physics_hook = *p;
+        m->cfg.physics = &m->physics_hook;
+    } else {
+        m->cfg.physics = NULL;
+    }
+}
+
+void sim_adis_imu_set_error_model(struct sim_adis_imu *m, const struct sim_error_model *e)
+{
+    if (m == NULL) {
+        return;
+    }
+    if (e != NULL) {
+        m->error_hook = *e;
+        m->cfg.error = &m->error_hook;
+    } else {
+        m->cfg.error = NULL;
+    }
+}
+
 void sim_adis_imu_set_magn(struct sim_adis_imu *m, double x, double y, double z)
 {
     if (m != NULL) {
@@ -855,7 +892,7 @@ uint16_t sim_adis_imu_peek(const struct sim_adis_imu *m, uint8_t addr)
         return 0;
     }
     if ((addr & 0x7Eu) == REG_DIAG) {
-        return m->diag;
+        return (uint16_t)(m->diag | m->fault_diag);
     }
     return m->reg[IDX(addr)];
 }
@@ -896,4 +933,106 @@ double sim_adis_imu_rate_sps(const struct sim_adis_imu *m)
         return 0.0;
     }
     return 16e9 / (double)m->period_16;
+}
+
+/* ---- the part interface ---- */
+
+static void p_set_input(void *model, const struct sim_inertial_input *in)
+{
+    sim_adis_imu_set_input(model, in);
+}
+
+static void p_set_physics(void *model, const struct sim_physics *p)
+{
+    sim_adis_imu_set_physics(model, p);
+}
+
+static void p_set_error_model(void *model, const struct sim_error_model *e)
+{
+    sim_adis_imu_set_error_model(model, e);
+}
+
+static void p_get_error_model(const void *model, struct sim_error_model *e)
+{
+    const struct sim_adis_imu *m = model;
+    if (m->cfg.error != NULL) {
+        *e = *m->cfg.error;
+    } else {
+        memset(e, 0, sizeof(*e));
+    }
+}
+
+static struct sim_spi_slave *p_slave(void *model)
+{
+    return &((struct sim_adis_imu *)model)->core.slave;
+}
+
+#define FAULT_DIAG_DEFAULT 0x0040u /* DIAG_STAT[6]: flash checksum [U] on the 1636x/1640x */
+
+static int p_fault(void *model, enum sim_fault f, const struct sim_fault_arg *a, bool on)
+{
+    struct sim_adis_imu *m = model;
+    switch (f) {
+    case SIM_FAULT_WRONG_ID:
+        if (on) {
+            if (m->true_prod_id == 0u) {
+                m->true_prod_id = m->reg[IDX(REG_PROD_ID)];
+            }
+            m->reg[IDX(REG_PROD_ID)] = (uint16_t)(m->true_prod_id + 1u);
+        } else if (m->true_prod_id != 0u) {
+            m->reg[IDX(REG_PROD_ID)] = m->true_prod_id;
+            m->true_prod_id = 0;
+        }
+        return INC_OK;
+    case SIM_FAULT_BUSY:
+        if (on) {
+            const uint64_t ns = a->duration_ns != 0u ? a->duration_ns : UINT64_MAX / 2u;
+            if (m->clk->now_ns + ns > m->busy_until) {
+                m->busy_until = m->clk->now_ns + ns;
+            }
+        } else {
+            m->busy_until = m->clk->now_ns;
+        }
+        return INC_OK;
+    case SIM_FAULT_NO_DATA_READY: m->dr_suppressed = on; return INC_OK;
+    case SIM_FAULT_DEVICE_ERROR:
+        m->fault_diag = on ? (a->mask != 0u ? a->mask : FAULT_DIAG_DEFAULT) : 0u;
+        return INC_OK;
+    case SIM_FAULT_STUCK_BIT:
+        if (a->bit > 15u) {
+            return INC_ERR_INVAL;
+        }
+        m->stuck_addr = (uint8_t)(a->addr & 0x7Eu);
+        m->stuck_mask = on ? (uint16_t)(1u << a->bit) : 0u;
+        m->stuck_set = a->level ? m->stuck_mask : 0u;
+        return INC_OK;
+    default: return INC_ERR_UNSUPPORTED;
+    }
+}
+
+static uint16_t p_peek(const void *model, uint8_t addr)
+{
+    return sim_adis_imu_peek(model, addr);
+}
+
+static void p_poke(void *model, uint8_t addr, uint16_t value)
+{
+    sim_adis_imu_poke(model, addr, value);
+}
+
+const struct sim_part_ops sim_adis_imu_part_ops = {
+    .kind = "adis_imu",
+    .set_input = p_set_input,
+    .set_physics = p_set_physics,
+    .set_error_model = p_set_error_model,
+    .get_error_model = p_get_error_model,
+    .slave = p_slave,
+    .fault = p_fault,
+    .peek = p_peek,
+    .poke = p_poke,
+};
+
+void sim_adis_imu_part(struct sim_adis_imu *m, struct sim_part *p)
+{
+    sim_part_bind(p, &sim_adis_imu_part_ops, m, m != NULL ? m->clk : NULL);
 }

@@ -4,6 +4,7 @@
  * 1.4, indirect registers 1.5, modes and ring buffer 1.6).
  */
 #include "inclino/sim/sca3000.h"
+#include "inclino/sim/part.h"
 
 #include <stddef.h>
 #include <string.h>
@@ -83,7 +84,8 @@ static void update_int_pin(struct sim_sca3000 *m)
     if (m->int_dev < 0 || !m->attached) {
         return;
     }
-    active = (m->int_status & m->int_mask & (INT_RING_3_4 | INT_RING_1_2)) != 0u;
+    active = (m->int_status & m->int_mask & (INT_RING_3_4 | INT_RING_1_2)) != 0u &&
+             !m->int_suppressed;
     level = (m->int_mask & 0x01u) != 0u ? active : !active;
     sim_pinbus_device_drive(m->bus, (unsigned)m->int_dev, m->int_pin, level);
 }
@@ -263,10 +265,10 @@ static bool ind_valid(const struct sim_sca3000 *m, uint8_t sel)
     }
 }
 
-static uint8_t peek(const struct sim_sca3000 *m, uint8_t a)
+static uint8_t peek_reg(const struct sim_sca3000 *m, uint8_t a)
 {
     switch (a) {
-    case R_REVID: return m->revid;
+    case R_REVID: return m->wrong_id ? (uint8_t)(m->revid + 1u) : m->revid;
     case R_STATUS:
         return (uint8_t)((m->unlocked ? STATUS_UNLOCKED : 0u) |
                          ((m->faults & SIM_SCA3000_FAULT_EEPROM) != 0u ? STATUS_EEPROM : 0u) |
@@ -292,6 +294,16 @@ static uint8_t peek(const struct sim_sca3000 *m, uint8_t a)
     case R_CTRL_DATA: return m->unlocked && ind_valid(m, m->ctrl_sel) ? m->ind[m->ctrl_sel] : 0u;
     default: return 0;
     }
+}
+
+/* A register as the bus reads it: a stuck bit (injected) applies on top. */
+static uint8_t peek(const struct sim_sca3000 *m, uint8_t a)
+{
+    uint8_t v = peek_reg(m, a);
+    if (m->stuck_mask != 0u && a == m->stuck_addr) {
+        v = (uint8_t)((v & ~m->stuck_mask) | m->stuck_set);
+    }
+    return v;
 }
 
 /* The byte of register a has been clocked out completely: apply the read's side effect. */
@@ -664,4 +676,87 @@ void sim_sca3000_detach(struct sim_sca3000 *m)
         sim_pinbus_device_release(m->bus, (unsigned)m->int_dev, m->int_pin);
     }
     m->attached = false;
+}
+
+/* ---- the part interface ------------------------------------------------------------------ */
+
+static void p_set_input(void *model, const struct sim_inertial_input *in)
+{
+    sim_sca3000_set_input(model, in);
+}
+
+static void p_set_physics(void *model, const struct sim_physics *p)
+{
+    sim_sca3000_set_physics(model, p);
+}
+
+static void p_set_error_model(void *model, const struct sim_error_model *e)
+{
+    sim_sca3000_set_error_model(model, e);
+}
+
+static void p_get_error_model(const void *model, struct sim_error_model *e)
+{
+    *e = ((const struct sim_sca3000 *)model)->error;
+}
+
+static struct sim_spi_slave *p_slave(void *model)
+{
+    return &((struct sim_sca3000 *)model)->slave;
+}
+
+static int p_fault(void *model, enum sim_fault f, const struct sim_fault_arg *a, bool on)
+{
+    struct sim_sca3000 *m = model;
+    switch (f) {
+    case SIM_FAULT_WRONG_ID: m->wrong_id = on; return INC_OK;
+    case SIM_FAULT_NO_DATA_READY:
+        m->int_suppressed = on;
+        update_int_pin(m);
+        return INC_OK;
+    case SIM_FAULT_DEVICE_ERROR:
+        if (on) {
+            m->faults |= SIM_SCA3000_FAULT_EEPROM;
+        } else {
+            m->faults &= (uint8_t)~SIM_SCA3000_FAULT_EEPROM;
+        }
+        return INC_OK;
+    case SIM_FAULT_STUCK_BIT:
+        if (a->bit > 7u) {
+            return INC_ERR_INVAL;
+        }
+        m->stuck_addr = (uint8_t)(a->addr & 0x3Fu);
+        m->stuck_mask = on ? (uint8_t)(1u << a->bit) : 0u;
+        m->stuck_set = a->level ? m->stuck_mask : 0u;
+        return INC_OK;
+    default: return INC_ERR_UNSUPPORTED;
+    }
+}
+
+static uint16_t p_peek(const void *model, uint8_t addr)
+{
+    return peek(model, (uint8_t)(addr & 0x3Fu));
+}
+
+static void p_poke(void *model, uint8_t addr, uint16_t value)
+{
+    struct sim_sca3000 *m = model;
+    apply_write(m, (uint8_t)(addr & 0x3Fu), (uint8_t)value, m->bus->clk->now_ns);
+}
+
+const struct sim_part_ops sim_sca3000_part_ops = {
+    .kind = "sca3000",
+    .set_input = p_set_input,
+    .set_physics = p_set_physics,
+    .set_error_model = p_set_error_model,
+    .get_error_model = p_get_error_model,
+    .slave = p_slave,
+    .fault = p_fault,
+    .peek = p_peek,
+    .poke = p_poke,
+};
+
+void sim_sca3000_part(struct sim_sca3000 *m, struct sim_part *p)
+{
+    sim_part_bind(p, &sim_sca3000_part_ops, m, m != NULL && m->bus != NULL ? m->bus->clk : NULL);
 }

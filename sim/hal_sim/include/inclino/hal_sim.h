@@ -50,6 +50,22 @@ struct hal_sim {
 int hal_sim_init(struct hal_sim *port, struct sim_clock *clk, struct sim_pinbus *bus,
                  struct hal *out);
 
+/*
+ * The time-only HAL: a clock and nothing else, for code under test that needs time and delays
+ * but no board (pure driver logic, benchmarks of the SPI engine's own cost). Pins read low and
+ * writes are ignored; attaching an interrupt succeeds and it never fires; irq_wait moves the
+ * clock to its deadline and returns INC_ERR_TIMEOUT; critical sections nest and are counted.
+ * now_ns starts at 0 (set it to start elsewhere).
+ */
+struct hal_sim_time {
+    uint64_t now_ns;
+    uint32_t crit_depth;
+    uint64_t delays, waits, pin_writes; /* statistics */
+};
+
+/* Zero *t and fill *out. Returns 0 or INC_ERR_NULL. */
+int hal_sim_time_init(struct hal_sim_time *t, struct hal *out);
+
 #ifdef __cplusplus
 }
 #endif

@@ -75,6 +75,13 @@ struct sim_spi_slave_cfg {
 
 #define SIM_SPI_MISO_QUEUE 8u
 
+/* Wire faults (sim/part.h); zero (the state after init) is a healthy slave. */
+enum sim_spi_miso_fault {
+    SIM_SPI_MISO_OK = 0,
+    SIM_SPI_MISO_STUCK_LOW = 1,  /* MISO driven low whenever the part drives it */
+    SIM_SPI_MISO_STUCK_HIGH = 2, /* MISO driven high whenever the part drives it */
+};
+
 struct sim_spi_slave {
     struct sim_spi_slave_cfg cfg;
     struct sim_pin_listener listener;
@@ -100,6 +107,9 @@ struct sim_spi_slave {
         bool level;
     } q[SIM_SPI_MISO_QUEUE];
     unsigned q_head, q_len;
+    /* injected faults: MISO stuck (enum sim_spi_miso_fault), XOR of every word shifted out */
+    uint8_t miso_stuck;
+    uint16_t out_xor;
     /* statistics */
     uint32_t frames, total_words;
 };

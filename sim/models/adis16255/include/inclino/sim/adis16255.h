@@ -97,6 +97,10 @@ struct sim_adis16255 {
     bool self_test_active;
     bool self_test_fail; /* test back door: the next self-tests fail */
     int ev_sample, ev_dr_off, ev_cmd, ev_st;
+    /* injected faults (sim/part.h, sim_adis16255_part) */
+    uint16_t fault_status;          /* STATUS bits held on (device error) */
+    uint8_t stuck_addr;             /* register with a stuck bit (stuck_mask != 0) */
+    uint16_t stuck_mask, stuck_set; /* its bit and the level it reads */
     /* statistics */
     uint32_t samples, commands, dr_pulses, frame_errors;
 };
@@ -128,6 +132,17 @@ uint64_t sim_adis16255_period_ns(const struct sim_adis16255 *m);
 /* LSB of GYRO_OUT for the current range, °/s; LSB of GYRO_OFF, °/s. */
 double sim_adis16255_gyro_lsb(const struct sim_adis16255 *m);
 #define SIM_ADIS16255_OFF_LSB (80.0 / 4368.0)
+
+/*
+ * The part interface (sim/part.h). Faults: wire ones (MISO stuck, corrupt frame), physics ones,
+ * and in the model: wrong identity (GYRO_SCALE reads a reserved bit, as another part of the
+ * family would: the driver has no PROD_ID to check), busy (sim_adis16255_force_busy), no
+ * data-ready (sim_adis16255_suppress_dr), device error (STATUS bits held on, ALARM1 by default:
+ * EA in every output word), stuck bit (any register as read over the bus).
+ */
+struct sim_part;
+extern const struct sim_part_ops sim_adis16255_part_ops;
+void sim_adis16255_part(struct sim_adis16255 *m, struct sim_part *p);
 
 #ifdef __cplusplus
 }

@@ -108,6 +108,15 @@ struct sim_adis_imu {
     bool self_test_active;
     uint16_t self_test_fail; /* DIAG bits the next self-test reports */
     uint32_t bursts_served;
+    /* hooks installed by sim_adis_imu_set_physics / _set_error_model (cfg points here) */
+    struct sim_physics physics_hook;
+    struct sim_error_model error_hook;
+    /* injected faults (sim/part.h, sim_adis_imu_part) */
+    bool dr_suppressed;             /* no data-ready pulses */
+    uint16_t fault_diag;            /* DIAG_STAT bits held on (device error) */
+    uint16_t true_prod_id;          /* PROD_ID while a wrong identity is shown */
+    uint8_t stuck_addr;             /* register with a stuck bit (stuck_mask != 0) */
+    uint16_t stuck_mask, stuck_set; /* its bit and the level it reads */
     /* statistics */
     uint64_t samples;
     uint32_t dr_pulses, commands, flash_writes, spi_failures, protocol_errors;
@@ -117,6 +126,10 @@ int sim_adis_imu_init(struct sim_adis_imu *m, const struct sim_adis_imu_cfg *cfg
 
 /* Static physical input (used when no physics hook is set). */
 void sim_adis_imu_set_input(struct sim_adis_imu *m, const struct sim_inertial_input *in);
+/* Install (or with NULL remove) the physics and error-model hooks at run time: the same as
+ * cfg.physics / cfg.error at init (the hook is copied into the model). */
+void sim_adis_imu_set_physics(struct sim_adis_imu *m, const struct sim_physics *p);
+void sim_adis_imu_set_error_model(struct sim_adis_imu *m, const struct sim_error_model *e);
 /* Magnetic field in gauss (1640x), and the AUX_ADC input in volts. */
 void sim_adis_imu_set_magn(struct sim_adis_imu *m, double x, double y, double z);
 void sim_adis_imu_set_aux(struct sim_adis_imu *m, double volts);
@@ -142,6 +155,17 @@ double sim_adis_imu_gyro_offset_dps(const struct sim_adis_imu *m, unsigned axis)
 bool sim_adis_imu_is_busy(const struct sim_adis_imu *m);
 /* Output rate in force, in SPS. */
 double sim_adis_imu_rate_sps(const struct sim_adis_imu *m);
+
+/*
+ * The part interface (sim/part.h). Faults: wire ones (MISO stuck, corrupt frame), physics ones,
+ * and in the model: wrong identity (PROD_ID + 1, a part number none of the variants has), busy
+ * (for arg.duration_ns, no command behind it), no data-ready, device error (DIAG_STAT bits held
+ * on, 0x0040 by default: EA in every output word), stuck bit (any register as read over the
+ * bus, burst words included).
+ */
+struct sim_part;
+extern const struct sim_part_ops sim_adis_imu_part_ops;
+void sim_adis_imu_part(struct sim_adis_imu *m, struct sim_part *p);
 
 /* Model constants the tests need (all [U] unless noted; see adis_imu.c). */
 #define SIM_ADIS_IMU_STALL_NORMAL_NS 9000u

@@ -157,6 +157,12 @@ struct sim_sca3000 {
 
     bool attached;
 
+    /* injected faults (sim/part.h, sim_sca3000_part) */
+    bool int_suppressed;           /* the INT line never goes active */
+    bool wrong_id;                 /* REVID reads revid + 1 */
+    uint8_t stuck_addr;            /* register with a stuck bit (stuck_mask != 0) */
+    uint8_t stuck_mask, stuck_set; /* its bit and the level it reads */
+
     /* statistics and diagnostics */
     uint32_t frames, corrupt_frames, writes_applied, protocol_errors;
     const char *last_protocol; /* what the last protocol violation was (static string) */
@@ -185,6 +191,18 @@ uint32_t sim_sca3000_odr_mhz(const struct sim_sca3000 *m);
 
 /* Disconnect from the bus (MISO released, no more sampling): "no device" at run time. */
 void sim_sca3000_detach(struct sim_sca3000 *m);
+
+/*
+ * The part interface (sim/part.h). Faults: wire ones (MISO stuck, corrupt frame), physics ones,
+ * and in the model: wrong identity (REVID + 1), no data-ready (the INT line never goes
+ * active: the part has no data-ready output, INT is what a driver waits on), device error
+ * (STATUS bit1, the EEPROM checksum error of SIM_SCA3000_FAULT_EEPROM), stuck bit (any
+ * register byte as read over the bus). Busy is unsupported: the part has no busy state.
+ * peek/poke address the 8-bit direct registers (peek: as latched for the current CS period).
+ */
+struct sim_part;
+extern const struct sim_part_ops sim_sca3000_part_ops;
+void sim_sca3000_part(struct sim_sca3000 *m, struct sim_part *p);
 
 #ifdef __cplusplus
 }
