@@ -265,7 +265,7 @@ static double incl_err(const struct att *a, const double up_true[3])
 }
 
 static struct att_config cfg_base, cfg_bad;
-static struct att st;
+static struct att g_att;
 
 static void check_bad(fx_q16_t *field, fx_q16_t val)
 {
@@ -274,8 +274,8 @@ static void check_bad(fx_q16_t *field, fx_q16_t val)
     s.acc_g[2] = 65536;
     cfg_bad = cfg_base;
     *field = val;
-    CHECK_ERR(att_init(&st, &cfg_bad), INC_ERR_INVAL);
-    CHECK_ERR(att_update(&st, &s), INC_ERR_STATE); /* a failed init leaves it unusable */
+    CHECK_ERR(att_init(&g_att, &cfg_bad), INC_ERR_INVAL);
+    CHECK_ERR(att_update(&g_att, &s), INC_ERR_STATE); /* a failed init leaves it unusable */
 }
 
 #define BAD(f, v) check_bad(&cfg_bad.f, (v))
@@ -284,18 +284,18 @@ static void check_bad(fx_q16_t *field, fx_q16_t val)
 static void test_config_and_errors(void)
 {
     struct att_sample s;
-    memset(&st, 0, sizeof st);
+    memset(&g_att, 0, sizeof g_att);
     memset(&s, 0, sizeof s);
     CHECK_ERR(att_config_default(NULL, 0), INC_ERR_NULL);
     CHECK_OK(att_config_default(&cfg_base, q16(FS_BROAD)));
     CHECK_ERR(att_init(NULL, &cfg_base), INC_ERR_NULL);
-    CHECK_ERR(att_init(&st, NULL), INC_ERR_NULL);
-    CHECK_ERR(att_update(&st, &s), INC_ERR_STATE);
-    CHECK_ERR(att_reset(&st), INC_ERR_STATE);
+    CHECK_ERR(att_init(&g_att, NULL), INC_ERR_NULL);
+    CHECK_ERR(att_update(&g_att, &s), INC_ERR_STATE);
+    CHECK_ERR(att_reset(&g_att), INC_ERR_STATE);
     CHECK_ERR(att_reset(NULL), INC_ERR_NULL);
-    CHECK_OK(att_init(&st, &cfg_base));
+    CHECK_OK(att_init(&g_att, &cfg_base));
     CHECK_ERR(att_update(NULL, &s), INC_ERR_NULL);
-    CHECK_ERR(att_update(&st, NULL), INC_ERR_NULL);
+    CHECK_ERR(att_update(&g_att, NULL), INC_ERR_NULL);
     BAD(sample_rate_hz, q16(50));
     BAD(sample_rate_hz, q16(5000));
     BAD(tau_acc_s, 0);
@@ -320,39 +320,39 @@ static void test_config_and_errors(void)
     cfg_bad = cfg_base;
     cfg_bad.sample_rate_hz = q16(100);
     cfg_bad.gyro_fs_dps = q16(4000); /* > 20 x rate */
-    CHECK_ERR(att_init(&st, &cfg_bad), INC_ERR_INVAL);
+    CHECK_ERR(att_init(&g_att, &cfg_bad), INC_ERR_INVAL);
     cfg_bad = cfg_base;
     cfg_bad.bias_motion_tau_s = 0; /* off is allowed */
-    CHECK_OK(att_init(&st, &cfg_bad));
-    CHECK_OK(att_init(&st, &cfg_base));
+    CHECK_OK(att_init(&g_att, &cfg_bad));
+    CHECK_OK(att_init(&g_att, &cfg_base));
 
     /* An out-of-range input is rejected (INC_ERR_RANGE) and makes the output invalid for
      * fault_hold_s (1 s); the unknown rotation of the lost samples decays with tau_acc. */
-    CHECK_OK(feed(&st, 0, 0, 0, 0, 0, 1, 2000));
-    CHECK(att_get_valid(&st));
+    CHECK_OK(feed(&g_att, 0, 0, 0, 0, 0, 1, 2000));
+    CHECK(att_get_valid(&g_att));
     s.acc_g[2] = q16(1);
     s.gyro_dps[0] = q16(3000); /* > 1.125 x 2000 */
-    CHECK_ERR(att_update(&st, &s), INC_ERR_RANGE);
-    CHECK(!att_get_valid(&st));
-    CHECK((att_get_status(&st) & ATT_FAULT_INPUT) != 0);
+    CHECK_ERR(att_update(&g_att, &s), INC_ERR_RANGE);
+    CHECK(!att_get_valid(&g_att));
+    CHECK((att_get_status(&g_att) & ATT_FAULT_INPUT) != 0);
     s.gyro_dps[0] = 0;
     s.acc_g[0] = q16(19); /* > 1.125 x 16 */
-    CHECK_ERR(att_update(&st, &s), INC_ERR_RANGE);
-    CHECK_OK(feed(&st, 0, 0, 0, 0, 0, 1, 200));
-    CHECK(!att_get_valid(&st)); /* within fault_hold_s */
-    CHECK_OK(feed(&st, 0, 0, 0, 0, 0, 1, 200));
-    CHECK_EQ_INT(att_get_status(&st), 0); /* cleared after fault_hold_s */
-    CHECK_OK(feed(&st, 0, 0, 0, 0, 0, 1, 10 * 286));
-    CHECK(att_get_valid(&st));
+    CHECK_ERR(att_update(&g_att, &s), INC_ERR_RANGE);
+    CHECK_OK(feed(&g_att, 0, 0, 0, 0, 0, 1, 200));
+    CHECK(!att_get_valid(&g_att)); /* within fault_hold_s */
+    CHECK_OK(feed(&g_att, 0, 0, 0, 0, 0, 1, 200));
+    CHECK_EQ_INT(att_get_status(&g_att), 0); /* cleared after fault_hold_s */
+    CHECK_OK(feed(&g_att, 0, 0, 0, 0, 0, 1, 10 * 286));
+    CHECK(att_get_valid(&g_att));
     s.acc_g[0] = 0;
     s.veh_valid = true;
     s.speed_mps = q16(250); /* > 200 m/s */
-    CHECK_ERR(att_update(&st, &s), INC_ERR_RANGE);
-    CHECK_OK(att_reset(&st));
-    CHECK(!att_get_valid(&st));
-    CHECK_EQ_INT(att_get_bound(&st), FX_DEG_180);
-    CHECK_OK(feed(&st, 0, 0, 0, 0, 0, 1, 10));
-    CHECK(!att_get_valid(&st)); /* the init phase (first tau_acc) is never valid */
+    CHECK_ERR(att_update(&g_att, &s), INC_ERR_RANGE);
+    CHECK_OK(att_reset(&g_att));
+    CHECK(!att_get_valid(&g_att));
+    CHECK_EQ_INT(att_get_bound(&g_att), FX_DEG_180);
+    CHECK_OK(feed(&g_att, 0, 0, 0, 0, 0, 1, 10));
+    CHECK(!att_get_valid(&g_att)); /* the init phase (first tau_acc) is never valid */
 }
 
 /* Static tilt with a gyro bias: rest detected, bias converged, inclination exact, bound near its

@@ -46,7 +46,6 @@ static void test_bitident(void)
     REQUIRE(att_init(&a, &c) == 0);
     s.sat = 0;
     s.veh_valid = false;
-    s.speed_mps = 0;
     s.yaw_rate_dps = 0;
     for (k = 0; k < ATT_BITIDENT_N; k++) {
         int32_t q[4];
