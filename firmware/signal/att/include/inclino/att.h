@@ -174,7 +174,7 @@ struct att {
     int32_t b[3];           /* Q24 deg/s bias */
     int32_t P;              /* Q30 (deg/s)^2 bias variance */
     int32_t rpw;            /* Q24 1 / ((P + W) / 2^pw_e) */
-    int32_t zb;             /* Q20 1/sqrt(P) */
+    int32_t zb;             /* Q16 1/sqrt(P) (1 / (deg/s)) */
     int32_t sigb;           /* Q30 deg/s sqrt(P) */
     int32_t D;              /* Q20 deg drift bound */
     int32_t L;              /* Q26 g mean horizontal residual */
