@@ -212,7 +212,7 @@ int att_reset(struct att *a);
  *   INC_ERR_RANGE an input beyond full scale + 1/8 (or |speed| > 200 m/s): the sample is not
  *                 used, the attitude is not propagated, the bound grows by full scale x dt,
  *                 att_valid is false (and stays false for fault_hold_s).
- * Cost: see STATUS.md; no division except during the first tau_acc seconds (running mean)
+ * Cost: docs/benchmarks.md ("Attitude (3D estimator)"); no division except during the first tau_acc seconds (running mean)
  * and on re-basing (rare, bounded: at most once per sample). */
 int att_update(struct att *a, const struct att_sample *s);
 
