@@ -213,7 +213,7 @@ int imu_csv_read_named(FILE *in, const char *name, const struct imu_csv_spec *sp
     t->ncols = nspec;
     while ((got = sim_read_line(in, buf, sizeof buf)) != SIM_LINE_EOF) {
         char *s;
-        int n, k;
+        int n;
         double row[IMU_CSV_NAMED_MAX_COLS];
         line++;
         if (got == SIM_LINE_TOO_LONG) {
@@ -233,6 +233,7 @@ int imu_csv_read_named(FILE *in, const char *name, const struct imu_csv_spec *sp
         if (*s == '\0' || *s == '#') continue;
         n = split(s, f, IMU_CSV_NAMED_MAX_FIELDS);
         if (fields == 0) {
+            int k;
             /* The header: every wanted column found once by name; others are ignored. */
             if (n > IMU_CSV_NAMED_MAX_FIELDS) {
                 snprintf(msg, msg_len, "%s line %ld: more than %d columns", name, line,
