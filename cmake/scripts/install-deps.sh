@@ -7,6 +7,7 @@
 # Checks and tools:     cppcheck clang-format valgrind (instruction counts) sigrok-cli (decoding VCDs)
 # BROAD test data:      python3-numpy python3-scipy (tools/broad/broad2csv.py), curl ca-certificates
 #                       (tools/broad/fetch-broad.sh downloads over HTTPS; docs/data.md)
+# Plots:                gnuplot-nox (tools/plots/att_error_bound.sh; docs/attitude.md)
 #
 # --no-install-recommends keeps QEMU from pulling in its GUI and firmware packages.
 # Uses sudo only when not already root.
@@ -16,7 +17,7 @@ packages="cmake make gcc g++ python3 libeigen3-dev \
     gcc-arm-none-eabi libnewlib-arm-none-eabi gcc-riscv64-unknown-elf \
     qemu-system-arm qemu-system-misc zlib1g-dev \
     cppcheck clang-format valgrind sigrok-cli \
-    python3-numpy python3-scipy curl ca-certificates"
+    python3-numpy python3-scipy curl ca-certificates gnuplot-nox"
 
 if [ "$(id -u)" -eq 0 ]; then
     sudo=""

@@ -179,7 +179,7 @@ struct att {
     int32_t b[3];           /* Q24 deg/s bias */
     int32_t P;              /* Q30 (deg/s)^2 bias variance */
     int32_t rpw;            /* Q24 1 / ((P + W) / 2^pw_e) */
-    int32_t zb;             /* Q20 1/sqrt(P) */
+    int32_t zb;             /* Q16 1/sqrt(P) (1 / (deg/s)) */
     int32_t sigb;           /* Q30 deg/s sqrt(P) */
     int32_t D;              /* Q20 deg drift bound */
     int32_t L;              /* Q26 g mean horizontal residual */
@@ -218,7 +218,7 @@ int att_reset(struct att *a);
  *   INC_ERR_RANGE an input beyond full scale + 1/8 (or |speed| > 200 m/s): the sample is not
  *                 used, the attitude is not propagated, the bound grows by full scale x dt,
  *                 att_valid is false (and stays false for fault_hold_s).
- * Cost: see STATUS.md; no division except during the first tau_acc seconds (running mean)
+ * Cost: docs/benchmarks.md ("Attitude (3D estimator)"); no division except during the first tau_acc seconds (running mean)
  * and on re-basing (rare, bounded: at most once per sample). */
 int att_update(struct att *a, const struct att_sample *s);
 
