@@ -233,7 +233,6 @@ int imu_csv_read_named(FILE *in, const char *name, const struct imu_csv_spec *sp
         if (*s == '\0' || *s == '#') continue;
         n = split(s, f, IMU_CSV_NAMED_MAX_FIELDS);
         if (fields == 0) {
-            int k;
             /* The header: every wanted column found once by name; others are ignored. */
             int k;
             if (n > IMU_CSV_NAMED_MAX_FIELDS) {
