@@ -461,6 +461,7 @@ static const struct att_param att_params[] = {
     ATT_P(bound_arw_dps_rts, 0, "gyro angle random walk in the bound, deg/sqrt(s)"),
     ATT_P(bound_latency_s, 0, "output time-tag uncertainty, s"),
     ATT_P(bound_sat_dps, 0, "drift rate per saturated gyro axis, deg/s"),
+    ATT_P(bound_lever_m, 0, "with aiding: the sensor's largest distance from the rear axle, m"),
     ATT_P(bound_limit_deg, 0, "valid only while the bound is at most this, deg"),
     ATT_P(fault_hold_s, 0, "invalid this long after a fault, s"),
 };

@@ -8,7 +8,8 @@
 # (q_err = q_est * inverse(q_truth), 2 acos(min(1, sqrt(w^2 + z^2))), as tools/lib/attscore);
 # gnuplot (Debian gnuplot-nox, pngcairo) draws error, bound and the valid flag. The temporary
 # files are removed; only the PNG is written. A plot of BROAD data must carry its attribution
-# (BROAD, Laidig et al. 2021, CC BY 4.0); the title does.
+# (BROAD, Laidig et al. 2021, CC BY 4.0); the title does. For other data set DATA_NOTE, e.g.
+# DATA_NOTE="Data: simulated, tools/vehicle_sim --scenario cornering".
 set -eu
 build="${1:?usage: att_error_bound.sh <host build dir> <trial.csv[.gz]> <out.png> [imu_replay options]}"
 trial="${2:?trial CSV}"
@@ -41,12 +42,13 @@ with op(truth_path, "rt") as ft, open(est_path) as fe, open(out_path, "w") as fo
         scored = 1 if (a["movement"] == "1" and t >= 5) else 0
         fo.write("%.4f %.4f %.4f %s %d\n" % (t, err, float(b["att_bound_deg"]), b["att_valid"], scored))
 PY
-name=$(basename "$trial" .csv.gz)
+name=$(basename "$(basename "$trial" .gz)" .csv)
+note="${DATA_NOTE:-Data: BROAD, Laidig et al. 2021, CC BY 4.0}"
 opts="${*:-defaults (att)}"
 gnuplot <<GP
 set terminal pngcairo size 1100,520 font "DejaVu Sans,10" noenhanced
 set output "$png"
-set title "Inclination error and its stated bound, imu_replay $opts, trial $name\nData: BROAD, Laidig et al. 2021, CC BY 4.0"
+set title "Inclination error and its stated bound, imu_replay $opts, $name\n$note"
 set xlabel "time (s)"
 set ylabel "deg"
 set yrange [0:10]

@@ -343,6 +343,7 @@ int att_config_default(struct att_config *cfg, fx_q16_t sample_rate_hz)
     cfg->bound_arw_dps_rts = Q16_FRAC(1, 100);
     cfg->bound_sat_dps = Q16(200);
     cfg->bound_limit_deg = Q16(5);
+    cfg->bound_lever_m = Q16(2);
     cfg->require_aiding = 0u;
     cfg->fault_hold_s = Q16(1);
     return INC_OK;
@@ -386,6 +387,8 @@ int att_reset(struct att *a)
     seed_bias_trackers(a);
     a->D = 0;
     a->L = 0;
+    a->AL = 0;
+    a->yaw_lp = 0;
     a->bound = FX_DEG_180;
     a->v_prev = 0;
     a->n_init = 0;
@@ -427,7 +430,7 @@ int att_init(struct att *a, const struct att_config *c)
         !in_range(c->bound_latency_s, 0, Q16_FRAC(1, 10)) ||
         !in_range(c->bound_arw_dps_rts, 0, Q16(1)) || !in_range(c->bound_sat_dps, 0, Q16(4000)) ||
         !in_range(c->bound_limit_deg, 1, Q16(90)) || !in_range(c->fault_hold_s, 0, Q16(60)) ||
-        c->require_aiding > 1u) {
+        !in_range(c->bound_lever_m, 0, Q16(10)) || c->require_aiding > 1u) {
         return INC_ERR_INVAL;
     }
     /* tau_acc * rate >= 64 keeps the filter rate state u within +-0.5 g per step */
@@ -464,6 +467,13 @@ int att_init(struct att *a, const struct att_config *c)
     /* first-order averages with a gain 2^-n: tau rounded to a power of two samples */
     a->kr_sh = pow2_samples(c->rest_tau_s, c->sample_rate_hz);
     a->kl_sh = pow2_samples(c->bound_lin_tau_s, c->sample_rate_hz);
+    a->ky_sh = pow2_samples(Q16_FRAC(1, 4), c->sample_rate_hz);
+    /* lever terms: c1 = d (pi/180)^2 / g0 = d x 3.10626e-5 g per (deg/s)^2, Q40 from Q16 m
+     * (x 2^24 x 3.10626e-5 = 521.15, taken as 522: rounded up, a bound); c2 = d (pi/180) / g0
+     * x fs / 2^ky (the low-pass's time constant), Q30: pi/180/g0 = 1910982 / 2^30 */
+    a->lev_c1 = c->bound_lever_m * 522;
+    a->lev_c2 = (int32_t)((((int64_t)c->bound_lever_m * c->sample_rate_hz) >> 16) * 1910983 >>
+                          (16u + a->ky_sh));
     a->leak[0] = (int32_t)((((uint64_t)1 << 62) + FT / 2u) / FT);
     {
         uint64_t FTr = F *
@@ -636,7 +646,7 @@ static void strapdown(int32_t q[4], const int32_t w[3], int32_t kh_m, unsigned k
 
 int att_update(struct att *a, const struct att_sample *smp)
 {
-    int32_t g[3], acc[3], w[3], R[9], ag[3];
+    int32_t g[3], acc[3], w[3], R[9], ag[3], lev = 0;
     unsigned gsat = 0, asat = 0;
     bool rest_ok = true, init_done, grav_ok;
     int i;
@@ -674,6 +684,18 @@ int att_update(struct att *a, const struct att_sample *smp)
         /* keep the compensated specific force within the accelerometer's range */
         acc[0] = clampi(acc[0], a->acc_max);
         acc[1] = clampi(acc[1], a->acc_max);
+        /* The lever's acceleration, which the aiding above misses: d (w^2 + |dw/dt|), dw/dt from
+         * the yaw rate's 0.25 s low-pass (the rate sensor's noise and steps average out there).
+         * |w| is limited to 400 deg/s for the square (no car turns faster). */
+        {
+            const int32_t yc = clampi(smp->yaw_rate_dps, Q16(400)) >> 8; /* Q8 deg/s */
+            const int64_t t1 = rnd(mul64(yc, yc) * a->lev_c1, 30);       /* Q26 g */
+            int64_t t2;
+            if ((a->flags & 8u) == 0u) a->yaw_lp = smp->yaw_rate_dps;
+            a->yaw_lp += rnd32(smp->yaw_rate_dps - a->yaw_lp, a->ky_sh);
+            t2 = rnd(mul64((int32_t)uabs32(smp->yaw_rate_dps - a->yaw_lp), a->lev_c2), 20);
+            lev = (int32_t)(t1 + t2 > (1 << 29) ? (1 << 29) : t1 + t2);
+        }
         a->v_prev = smp->speed_mps;
         a->flags |= 8u;
         if (fx_abs(smp->speed_mps) >= Q16_FRAC(2, 10)) rest_ok = false;
@@ -798,6 +820,7 @@ int att_update(struct att *a, const struct att_sample *smp)
         if (dh > (uint32_t)(1 << 29))
             dh = (uint32_t)(1 << 29); /* 8 g: bound far beyond any limit */
         a->L += rnd32((int32_t)dh - a->L, a->kl_sh);
+        a->AL += rnd32(lev - a->AL, a->kl_sh); /* the aiding's lever error, same averaging */
     }
 
     /* ---- unit filtered gravity: 1/|y| tracked by one Newton step per sample ---- */
@@ -886,7 +909,9 @@ int att_update(struct att *a, const struct att_sample *smp)
         a->D += rnd(mul64(rate, a->dt_q30), 26);
         if (!asat && init_done) a->D -= mulr(a->D, a->leak[(a->flags & 2u) ? 1 : 0], 30);
         if (a->D > (FX_DEG_180 << 4)) a->D = FX_DEG_180 << 4;
-        lin = grav_ok ? mulrs(mulr(a->L, a->ry, 38), a->c_lin, 16) : FX_DEG_180;
+        lin = grav_ok ? mulrs(mulr(a->L, a->ry, 38), a->c_lin, 16) +
+                            mulrs(mulr(a->AL, a->ry, 38), RAD2DEG_Q16, 16)
+                      : FX_DEG_180;
         b = sat((int64_t)a->floor_q16 + rnd(a->D, 4) + lin + mulr((int32_t)wn, a->lat, 30));
         if (b > FX_DEG_180 || !init_done) b = FX_DEG_180;
         a->bound = b;

@@ -113,6 +113,11 @@ struct att_config {
     fx_q16_t bound_limit_deg;   /* Q16 deg, valid only if bound <= this, (0, 90]; default 5 */
     fx_q16_t fault_hold_s;      /* Q16 s, att_valid stays false this long after a fault, [0, 60];
                                   * default 1 */
+    fx_q16_t bound_lever_m;     /* Q16 m, with vehicle aiding: the largest distance of the
+                                  * sensor from the point whose speed the aiding uses (the rear
+                                  * axle's centre), [0, 10]: the aiding misses the acceleration
+                                  * of that lever, d (w^2 + |dw/dt|) with the yaw rate w, and
+                                  * the bound counts it; default 2 */
     uint32_t require_aiding;    /* 1: a vehicle, which sustains accelerations (cornering,
                                   * braking) longer than tau_acc; without the speed they can
                                   * even look like rest, and the bound cannot hold them: valid
@@ -168,6 +173,11 @@ struct att {
     uint32_t rest_min_n, init_n, fault_hold_n;
     uint8_t k1_s[2], k2_s[2], kh_s, pw_e;
     uint8_t kr_sh, kl_sh; /* rest / residual averaging gains 2^-n */
+    uint8_t ky_sh;        /* yaw-rate low-pass gain 2^-n (0.25 s) for dw/dt */
+    int32_t lev_c1;       /* Q40 g per (deg/s)^2: lever x (pi/180)^2 / g0 */
+    int32_t lev_c2;       /* Q30 g per deg/s of (yaw - its low-pass): lever x pi/180 / g0 / tau */
+    int32_t yaw_lp;       /* Q16 deg/s low-passed yaw rate */
+    int32_t AL;           /* Q26 g: the lever acceleration the aiding misses, low-passed */
     /* state */
     int32_t q[4];           /* Q30 gyro-frame quaternion */
     int32_t y[3];           /* Q26 g, filtered gravity in the gyro frame */
