@@ -1,0 +1,43 @@
+# run_scenario.cmake - one vehicle scenario through imu_replay with and without aiding, for
+# tests/att_vehicle (see its CMakeLists.txt).
+#   cmake -DSIM=.. -DREPLAY=.. -DSCORE=.. -DSCENARIO=<name> -DWORK=<dir> -DREQUIRE=<k<=v;...>
+#         -P run_scenario.cmake
+foreach(v SIM REPLAY SCORE SCENARIO WORK REQUIRE)
+  if(NOT DEFINED ${v})
+    message(FATAL_ERROR "run_scenario.cmake: -D${v}= is required")
+  endif()
+endforeach()
+set(in "${WORK}/veh_${SCENARIO}.csv")
+set(est "${WORK}/veh_${SCENARIO}_est.csv")
+execute_process(COMMAND "${SIM}" --scenario ${SCENARIO} --seed 1 --accel-bias-mg 1 --out "${in}"
+  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "vehicle_sim failed (${rc}): ${err}")
+endif()
+message(STATUS "${out}")
+set(req "")
+foreach(r IN LISTS REQUIRE)
+  list(APPEND req --require "${r}")
+endforeach()
+foreach(mode aided unaided)
+  if(mode STREQUAL "aided")
+    set(opt "")
+    set(args ${req})
+  else()
+    set(opt --no-aiding)
+    set(args --require "valid_frac<=0")
+  endif()
+  execute_process(COMMAND "${REPLAY}" --part adis16405 ${opt} "${in}" -o "${est}"
+    RESULT_VARIABLE rc ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "imu_replay (${mode}) failed (${rc}):\n${err}")
+  endif()
+  execute_process(COMMAND "${SCORE}" "${in}" "${est}" --name "${SCENARIO}_${mode}" ${args}
+    RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  message(STATUS "${out}")
+  if(NOT rc EQUAL 0)
+    file(REMOVE "${in}" "${est}")
+    message(FATAL_ERROR "att_score (${mode}, ${rc}): ${err}")
+  endif()
+endforeach()
+file(REMOVE "${in}" "${est}")
