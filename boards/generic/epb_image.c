@@ -17,7 +17,6 @@
 
 #include "inclino/adis_imu.h"
 #include "inclino/app.h"
-#include "inclino/app_adis.h"
 #include "inclino/calstore.h"
 #include "inclino/spi_bitbang.h"
 
@@ -86,8 +85,7 @@ volatile uint32_t epb_output_count;
 
 static struct spi_bitbang spi;
 static struct adis_imu imu;
-static struct app_adis adapter;
-static struct app_sensor sensor;
+static struct sensor sensor = {&adis_imu_sensor_ops, &imu};
 static struct calstore store;
 static struct app app;
 static struct app_face faces[CAL_FACES];
@@ -116,9 +114,6 @@ static int sensor_up(const struct hal *hal)
     err = adis_imu_init(&imu, &ic);
     if (err == INC_OK) {
         err = adis_imu_set_filter(&imu, 0u, ADIS_IMU_RANGE_300);
-    }
-    if (err == INC_OK) {
-        err = app_adis_sensor(&adapter, &imu, &sensor);
     }
     return err;
 }
@@ -150,7 +145,8 @@ void epb_image_run(const struct hal *hal)
     /* Static, not on the stack: the M0+ image has 1 KiB of stack (docs/build.md). */
     static struct app_cfg cfg;
     static struct app_result r;
-    /* Seed 000's budget and the default stillness thresholds at the ADIS default 819.2 SPS. */
+    /* The default budget (docs/epb-demo.md, "Error budget") and stillness thresholds at the
+     * ADIS default 819.2 SPS. */
     (void)app_cfg_default(&cfg, adis_imu_sample_rate_msps(ADIS_IMU_SMPL_PRD_DEFAULT));
     for (;;) {
         unsigned i;

@@ -80,7 +80,7 @@ static int confirm_bus(struct sca3000 *dev)
         return err;
     }
     if (id != dev->revid) {
-        dev->bus_faults++;
+        dev->bus_errors++;
         return INC_ERR_BUS;
     }
     return INC_OK;
@@ -100,7 +100,7 @@ static int check_pattern(struct sca3000 *dev, const uint8_t *buf, size_t n)
 /*
  * Read and check STATUS. confirm_zero: 0x00 (no flag set) is also what a MISO stuck low gives;
  * confirm it with REVID. Internal checks right after a data read skip that (the data read itself
- * was checked); the public sca3000_check_status() does it.
+ * was checked); the public sca3000_read_diag() does it.
  */
 static int status_check(struct sca3000 *dev, bool confirm_zero)
 {
@@ -111,7 +111,7 @@ static int status_check(struct sca3000 *dev, bool confirm_zero)
     }
     if (st == 0xFFu) {
         /* Every bit set, the unnamed ones too: not a status the part gives (MISO high). */
-        dev->bus_faults++;
+        dev->bus_errors++;
         return INC_ERR_BUS;
     }
     if (st == 0x00u && confirm_zero) {
@@ -131,7 +131,7 @@ static int status_check(struct sca3000 *dev, bool confirm_zero)
     return INC_OK;
 }
 
-int sca3000_check_status(struct sca3000 *dev, uint8_t *status)
+int sca3000_read_diag(struct sca3000 *dev, uint8_t *status)
 {
     int err;
     if (dev == NULL) {
@@ -212,7 +212,10 @@ int sca3000_init(struct sca3000 *dev, const struct sca3000_cfg *cfg)
     dev->status = 0;
     dev->int_armed = false;
     dev->int_pending = false;
-    dev->bus_faults = dev->frame_errors = dev->revid_confirms = 0;
+    dev->pace_started = false;
+    dev->next_ns = dev->sample_ns = 0u;
+    dev->pace_missed = 0u;
+    dev->bus_errors = dev->frame_errors = dev->revid_confirms = 0;
     if (cfg->variant == SCA3000_E01) {
         return INC_ERR_UNSUPPORTED; /* no source describes the E01 (sensors.md 1.1) */
     }
@@ -246,7 +249,7 @@ int sca3000_init(struct sca3000 *dev, const struct sca3000_cfg *cfg)
     }
     dev->revid = v;
     if (v == 0x00u || v == 0xFFu) {
-        dev->bus_faults++;
+        dev->bus_errors++;
         return INC_ERR_BUS; /* MISO stuck low/high or no device */
     }
     if (v != dev->expected_revid) {
@@ -325,6 +328,7 @@ int sca3000_set_mode(struct sca3000 *dev, enum sca3000_mode mode)
     if (mode != SCA3000_MODE_MOTION && odr_table[dev->variant][mode] == 0u) {
         return INC_ERR_UNSUPPORTED; /* option 2 exists on the E04/E05 only */
     }
+    dev->pace_started = false; /* the new rate's first sample is one period away */
     return rmw(dev, SCA3000_REG_MODE, SCA3000_MODE_MEAS_MASK, (uint8_t)mode, &dev->mode_reg);
 }
 
@@ -344,6 +348,55 @@ uint32_t sca3000_odr_mhz(const struct sca3000 *dev)
     }
     m = dev->mode_reg & SCA3000_MODE_MEAS_MASK;
     return m == SCA3000_MODE_MOTION ? 0u : odr_table[dev->variant][m];
+}
+
+uint32_t sca3000_period_ns(const struct sca3000 *dev)
+{
+    const uint32_t odr = sca3000_odr_mhz(dev);
+    /* ceil(1e12 / odr_mhz) ns: never shorter than the part's period. */
+    return odr == 0u ? 0u : (uint32_t)((1000000000000ull + odr - 1u) / odr);
+}
+
+int sca3000_wait_ready(struct sca3000 *dev, uint32_t timeout_ns, uint32_t *missed)
+{
+    uint32_t period;
+    uint64_t now;
+    int err = ready(dev);
+    if (missed != NULL) {
+        *missed = 0u;
+    }
+    if (err != INC_OK) {
+        return err;
+    }
+    period = sca3000_period_ns(dev);
+    if (dev->hal == NULL || period == 0u) {
+        return INC_ERR_STATE;
+    }
+    now = hal_now_ns(dev->hal);
+    if (!dev->pace_started) {
+        /* The part may still hold a sample from before (its registers keep the last one),
+         * which would not belong here: the first wait is one period too. */
+        dev->next_ns = now + period;
+        dev->pace_started = true;
+    }
+    dev->pace_missed = 0u;
+    if (now < dev->next_ns) {
+        if (timeout_ns != 0u && dev->next_ns - now > timeout_ns) {
+            hal_delay_until(dev->hal, now + timeout_ns);
+            return INC_ERR_TIMEOUT;
+        }
+        hal_delay_until(dev->hal, dev->next_ns);
+        now = dev->next_ns;
+    } else {
+        const uint64_t late = (now - dev->next_ns) / period;
+        dev->pace_missed = late > UINT32_MAX ? UINT32_MAX : (uint32_t)late;
+    }
+    dev->next_ns = now + period;
+    dev->sample_ns = now;
+    if (missed != NULL) {
+        *missed = dev->pace_missed;
+    }
+    return INC_OK;
 }
 
 int sca3000_read_accel(struct sca3000 *dev, int16_t xyz[3])
@@ -367,16 +420,16 @@ int sca3000_read_accel(struct sca3000 *dev, int16_t xyz[3])
         err = check_pattern(dev, b, 6u);
     }
     if (err == INC_OK) {
-        err = sca3000_decode_accel((uint16_t)(((unsigned)b[0] << 8) | b[1]), &c[0]);
+        err = sca3000_accel_counts_from_word((uint16_t)(((unsigned)b[0] << 8) | b[1]), &c[0]);
     }
     if (err == INC_OK) {
-        err = sca3000_decode_accel((uint16_t)(((unsigned)b[2] << 8) | b[3]), &c[2]);
+        err = sca3000_accel_counts_from_word((uint16_t)(((unsigned)b[2] << 8) | b[3]), &c[2]);
     }
     if (err == INC_OK) {
-        err = sca3000_decode_accel((uint16_t)(((unsigned)b[4] << 8) | b[5]), &c[1]);
+        err = sca3000_accel_counts_from_word((uint16_t)(((unsigned)b[4] << 8) | b[5]), &c[1]);
     }
     if (err == INC_ERR_BUS) {
-        dev->bus_faults++;
+        dev->bus_errors++;
     }
     if (err == INC_OK) {
         err = status_check(dev, false);
@@ -414,7 +467,7 @@ int sca3000_read_temp(struct sca3000 *dev, uint16_t *raw9)
     if (err != INC_OK) {
         return err;
     }
-    t = sca3000_decode_temp((uint16_t)(((unsigned)b[0] << 8) | b[1]));
+    t = sca3000_temp_counts_from_word((uint16_t)(((unsigned)b[0] << 8) | b[1]));
     *raw9 = t;
     return INC_OK;
 }
@@ -606,7 +659,7 @@ int sca3000_ring_count(struct sca3000 *dev, unsigned *count)
         return err;
     }
     if (c > SCA3000_RING_CAPACITY) {
-        dev->bus_faults++;
+        dev->bus_errors++;
         return INC_ERR_BUS; /* more than the ring holds: not a count (e.g. MISO high) */
     }
     if (c == 0u) {
@@ -650,7 +703,7 @@ int sca3000_ring_read(struct sca3000 *dev, int16_t *values, size_t cap, size_t *
             return err;
         }
         for (i = 0; i < k; i++) {
-            values[done + i] = sca3000_decode_ring11(
+            values[done + i] = sca3000_ring_counts_from_word(
                 (uint16_t)(((unsigned)b[2u * i] << 8) | b[2u * i + 1u]));
         }
         done += k;

@@ -57,13 +57,13 @@ int sensor_self_test(const struct sensor *s, struct sensor_diag *out)
     return s->ops->self_test(s->dev, out);
 }
 
-int sensor_identity(const struct sensor *s, struct sensor_identity *out)
+int sensor_get_identity(const struct sensor *s, struct sensor_identity *out)
 {
     if (s == NULL || s->ops == NULL || s->ops->identity == NULL || out == NULL) return INC_ERR_NULL;
     return s->ops->identity(s->dev, out);
 }
 
-int sensor_info(const struct sensor *s, struct sensor_info *out)
+int sensor_get_info(const struct sensor *s, struct sensor_info *out)
 {
     if (s == NULL || s->ops == NULL || s->ops->info == NULL || out == NULL) return INC_ERR_NULL;
     return s->ops->info(s->dev, out);

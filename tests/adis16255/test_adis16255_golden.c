@@ -191,9 +191,9 @@ static void test_commands(void)
     for (i = 0; i < 10u; i++) {
         CHECK_EQ_INT(live.err[i], 0);
     }
-    CHECK_EQ_INT(live.val[2], adis16255_gyro_off_dps_q16(0xF93)); /* -109: the 2 °/s bias */
-    CHECK_EQ_INT(live.val[8], adis16255_gyro_off_dps_q16(0xF93)); /* from flash after reset */
-    CHECK_EQ_INT(live.val[9], 0);                                 /* bias nulled */
+    CHECK_EQ_INT(live.val[2], adis16255_gyro_off_dps_from_word(0xF93)); /* -109: the 2 °/s bias */
+    CHECK_EQ_INT(live.val[8], adis16255_gyro_off_dps_from_word(0xF93)); /* from flash after reset */
+    CHECK_EQ_INT(live.val[9], 0);                                       /* bias nulled */
     REQUIRE(trace_replay_open(&rp, COMMANDS) == 0);
     seq_commands(&rp.bus, &rp.hal, &replay);
     CHECK_OK(trace_replay_finish(&rp));
@@ -212,7 +212,7 @@ static void test_divergence(void)
     seq_init_read(&rp.bus, &rp.hal, ADIS16255_RANGE_160, &r);
     CHECK_EQ_INT(r.n, 1);
     CHECK_EQ_INT(r.err[0], INC_ERR_MISMATCH);
-    CHECK(!drv.initialised);
+    CHECK(!drv.ready);
     CHECK_ERR(trace_replay_finish(&rp), INC_ERR_MISMATCH);
     printf("expected divergence: %s\n", trace_replay_message(&rp));
     CHECK(strstr(trace_replay_message(&rp), "expected MOSI B904, driver sent B902") != NULL);

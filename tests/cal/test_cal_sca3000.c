@@ -93,7 +93,7 @@ static int read_mean(unsigned n, fx_q16_t mean[3], int16_t last[3])
         err = sca3000_read_accel(&dev, last);
         if (err != INC_OK) return err;
         for (i = 0; i < 3u; i++) {
-            err = sca3000_accel_to_q16_g(last[i], SCA3000_D01, &g[i]);
+            err = sca3000_accel_g_from_counts(last[i], SCA3000_D01, &g[i]);
             if (err != INC_OK) return err;
         }
         err = cal_avg_add(&a, g);
@@ -107,7 +107,7 @@ static int read_temp(fx_q16_t *t)
 {
     uint16_t raw = 0;
     int err = sca3000_read_temp(&dev, &raw);
-    return err ? err : sca3000_temp_to_q16_c(raw, t);
+    return err ? err : sca3000_temp_c_from_counts(raw, t);
 }
 
 /* Counts the error model must produce for specific force f at temperature t (noise off). */
@@ -141,7 +141,7 @@ static void test_hook_and_six_position(void)
         expected_counts(faces[f], 25.0, c);
         for (i = 0; i < 3u; i++) {
             CHECK_EQ_INT(last[i], c[i]); /* the error model's output, exactly, over SPI */
-            REQUIRE(sca3000_accel_to_q16_g(c[i], SCA3000_D01, &exp_q16[f][i]) == INC_OK);
+            REQUIRE(sca3000_accel_g_from_counts(c[i], SCA3000_D01, &exp_q16[f][i]) == INC_OK);
             CHECK_EQ_INT(mean[f][i], exp_q16[f][i]);
         }
     }

@@ -77,7 +77,7 @@ static void check_runtime_loss(enum sim_pull pull)
     CHECK(xyz[0] == 7 && xyz[1] == 7 && xyz[2] == 7);
     CHECK_ERR(sca3000_read_temp(&fx.dev, &t), INC_ERR_BUS);
     CHECK_EQ_INT(t, 77);
-    CHECK_ERR(sca3000_check_status(&fx.dev, &st), INC_ERR_BUS);
+    CHECK_ERR(sca3000_read_diag(&fx.dev, &st), INC_ERR_BUS);
     CHECK_ERR(sca3000_ring_count(&fx.dev, &count), INC_ERR_BUS);
     CHECK_EQ_INT(count, 77);
     CHECK_ERR(sca3000_ring_read(&fx.dev, vals, 8, &n), INC_ERR_BUS);
@@ -86,7 +86,7 @@ static void check_runtime_loss(enum sim_pull pull)
     CHECK_ERR(sca3000_set_mode(&fx.dev, SCA3000_MODE_OPTION1), INC_ERR_BUS);
     CHECK_ERR(sca3000_ind_read(&fx.dev, SCA3000_IND_OUT_CTRL, &v), INC_ERR_BUS);
     CHECK_EQ_HEX(v, 0x5A);
-    CHECK(fx.dev.bus_faults >= 8u);
+    CHECK(fx.dev.bus_errors >= 8u);
     CHECK_NO_VIOLATIONS();
 }
 
@@ -124,7 +124,7 @@ static void test_genuine_zero_accepted(void)
     CHECK_OK(sca3000_read_accel(&fx.dev, xyz));
     CHECK(xyz[0] == 0 && xyz[1] == 0 && xyz[2] == 0);
     CHECK_EQ_INT(fx.dev.revid_confirms, 1);
-    CHECK_EQ_INT(fx.dev.bus_faults, 0);
+    CHECK_EQ_INT(fx.dev.bus_errors, 0);
     CHECK_NO_VIOLATIONS();
 }
 
@@ -272,7 +272,7 @@ static void test_invalid_config_and_arguments(void)
     CHECK_ERR(sca3000_read_accel(&fx.dev, xyz), INC_ERR_STATE);
     CHECK_ERR(sca3000_set_mode(&fx.dev, SCA3000_MODE_NORMAL), INC_ERR_STATE);
     CHECK_ERR(sca3000_ring_read(&fx.dev, xyz, 3, &n), INC_ERR_STATE);
-    CHECK_ERR(sca3000_check_status(&fx.dev, NULL), INC_ERR_STATE);
+    CHECK_ERR(sca3000_read_diag(&fx.dev, NULL), INC_ERR_STATE);
     CHECK_ERR(sca3000_read_accel(NULL, xyz), INC_ERR_NULL);
 
     /* A usable mode-0 configuration (the part senses it) and the argument checks. */

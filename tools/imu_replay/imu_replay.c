@@ -73,45 +73,46 @@ static int32_t quant(double value, double lsb, int32_t lo, int32_t hi, bool *sat
     return (int32_t)r;
 }
 
-/* One row as the part would deliver it (nominal-scaled Q16, app_sensor.h). */
+/* One row as the part would deliver it (nominal-scaled Q16, inclino/sensor.h). */
 static void quantise_row(const struct part *p, const double *v, bool have_temp,
-                         struct app_sample *s)
+                         struct sensor_sample *s)
 {
-    bool asat = false, gsat = false, tsat = false;
+    bool tsat = false;
     unsigned i;
     memset(s, 0, sizeof(*s));
+    s->flags = SENSOR_S_HAVE_ACCEL | (p->adis ? SENSOR_S_HAVE_GYRO : 0u);
     for (i = 0; i < 3u; i++) {
+        bool asat = false, gsat = false;
         if (p->adis) {
             const int32_t ca = quant(v[4 + i] * 1e6, (double)p->acc_lsb_ug, -8192, 8191, &asat);
             const int32_t cg = quant(v[1 + i], 0.05, -8192, 8191, &gsat);
-            s->accel_g[i] = adis_imu_accel_g_q16(ca, p->acc_lsb_ug);
-            s->gyro_dps[i] = adis_imu_gyro_dps_q16(cg, ADIS_IMU_RANGE_300);
+            (void)adis_imu_accel_g_from_counts(ca, p->acc_lsb_ug, &s->accel_g[i]);
+            (void)adis_imu_gyro_dps_from_counts(cg, ADIS_IMU_RANGE_300, &s->gyro_dps[i]);
             asat = asat || ca <= -8192 || ca >= 8191;
             gsat = gsat || cg <= -8192 || cg >= 8191;
         } else {
             int32_t g = 0;
             const int32_t ca = quant(v[4 + i] * 1e6, (double)p->acc_lsb_ug, -4096, 4095, &asat);
-            (void)sca3000_accel_to_q16_g(ca, (enum sca3000_variant)p->variant, &g);
+            (void)sca3000_accel_g_from_counts(ca, (enum sca3000_variant)p->variant, &g);
             s->accel_g[i] = g;
             asat = asat || ca <= -4096 || ca >= 4095;
         }
+        if (asat) s->flags |= SENSOR_S_ACCEL_SAT_X << i;
+        if (gsat) s->flags |= SENSOR_S_GYRO_SAT_X << i;
     }
-    s->flags = p->adis ? APP_S_HAVE_GYRO : 0u;
     if (have_temp && p->temp) {
         if (p->adis) {
             const double lsb = p->family_1640x ? 0.14 : 0.136;
             const int32_t c = quant(v[7] - 25.0, lsb, -2048, 2047, &tsat);
-            s->temp_c = adis_imu_temp_c_q16(c, p->family_1640x ? ADIS_IMU_FAMILY_1640X
-                                                               : ADIS_IMU_FAMILY_1636X);
+            (void)adis_imu_temp_c_from_counts(
+                c, p->family_1640x ? ADIS_IMU_FAMILY_1640X : ADIS_IMU_FAMILY_1636X, &s->temp_c);
         } else {
             /* counts = T * 1.8 + 214.6 (sca3000.h, the Linux formula) */
             const int32_t raw = quant(v[7] * 1.8 + 214.6, 1.0, 0, 511, &tsat);
-            (void)sca3000_temp_to_q16_c(raw, &s->temp_c);
+            (void)sca3000_temp_c_from_counts(raw, &s->temp_c);
         }
-        s->flags |= APP_S_HAVE_TEMP;
+        s->flags |= SENSOR_S_HAVE_TEMP;
     }
-    if (asat) s->flags |= APP_S_ACCEL_SAT;
-    if (gsat) s->flags |= APP_S_GYRO_SAT;
 }
 
 /* ---- CSV: inclino/sim/imu_csv.h ----------------------------------------------------------------- */
@@ -142,26 +143,35 @@ static int cmp_double(const void *a, const void *b)
 static uint8_t flash_mem[2u * PAGE];
 static struct simflash flash;
 
-/* ---- The replay "sensor": the identity of the chosen part; samples come through app_step --------- */
+/* ---- The replay sensor: a struct sensor whose identity is the chosen part's; samples come
+ * through app_step (wait_ready and read are not used) ---------------------------------------- */
 
 struct replay_id {
-    struct calrec_binding id;
+    struct sensor_identity id;
 };
 
-static int replay_read(void *ctx, struct app_sample *out)
+static int replay_wait(void *dev, uint32_t timeout_ns)
 {
-    (void)ctx;
+    (void)dev;
+    (void)timeout_ns;
+    return INC_ERR_UNSUPPORTED; /* rows are fed with app_step */
+}
+
+static int replay_read(void *dev, struct sensor_sample *out)
+{
+    (void)dev;
     (void)out;
     return INC_ERR_UNSUPPORTED; /* rows are fed with app_step */
 }
 
-static int replay_identity(void *ctx, struct calrec_binding *out)
+static int replay_identity(void *dev, struct sensor_identity *out)
 {
-    *out = ((const struct replay_id *)ctx)->id;
+    *out = ((const struct replay_id *)dev)->id;
     return INC_OK;
 }
 
-static const struct app_sensor_ops replay_ops = {replay_read, replay_identity};
+static const struct sensor_ops replay_ops = {NULL, replay_wait,     replay_read, NULL,
+                                             NULL, replay_identity, NULL};
 
 /* ---- Options ----------------------------------------------------------------------------------- */
 
@@ -311,7 +321,7 @@ int main(int argc, char **argv)
     struct app_cfg cfg;
     struct tilt_config tc;
     struct replay_id rid;
-    struct app_sensor sensor = {&replay_ops, &rid};
+    struct sensor sensor = {&replay_ops, &rid};
     struct app_result last;
     char msg[512] = "";
     double *dts, nominal, period;
@@ -356,15 +366,15 @@ int main(int argc, char **argv)
     if (o.noise_mg >= 0.0) cfg.budget.noise_sigma_g = q16_mg(o.noise_mg);
     if (o.sens_ppm >= 0.0) cfg.budget.sensitivity = (fx_q30_t)ceil(o.sens_ppm * 1073.741824);
 
-    /* Identity of the replayed part (calrec.h binding table). */
+    /* Identity of the replayed part (struct sensor_identity, as the driver reports it). */
     memset(&rid, 0, sizeof rid);
     if (o.part->adis) {
-        rid.id.family = CALREC_FAMILY_ADIS163XX;
+        rid.id.family = SENSOR_FAMILY_ADIS163XX;
         rid.id.product = adis_imu_variant_info((enum adis_imu_variant)o.part->variant)->prod_id;
     } else {
-        static const uint32_t code[4] = {CALREC_SCA3000_D01, CALREC_SCA3000_E02, CALREC_SCA3000_E04,
-                                         CALREC_SCA3000_E05};
-        rid.id.family = CALREC_FAMILY_SCA3000;
+        static const uint32_t code[4] = {SCA3000_PRODUCT_D01, SCA3000_PRODUCT_E02,
+                                         SCA3000_PRODUCT_E04, SCA3000_PRODUCT_E05};
+        rid.id.family = SENSOR_FAMILY_SCA3000;
         rid.id.product = code[o.part->variant];
         rid.id.revision = o.revid;
     }
@@ -410,7 +420,12 @@ int main(int argc, char **argv)
             }
         } else {
             calrec_set_default(&rec);
-            rec.binding = rid.id;
+            rec.binding.family = rid.id.family;
+            rec.binding.product = rid.id.product;
+            rec.binding.revision = rid.id.revision;
+            rec.binding.serial = rid.id.serial;
+            rec.binding.lot_id1 = rid.id.lot_id1;
+            rec.binding.lot_id2 = rid.id.lot_id2;
         }
         if (calstore_save(&store, &rec, NULL) != INC_OK) {
             free(t.rows);
@@ -454,7 +469,7 @@ int main(int argc, char **argv)
     for (i = 0; i < t.n; i++) {
         const struct imu_csv_row *r = &t.rows[i];
         const double dt = i == 0 ? period : r->v[0] - t.rows[i - 1].v[0];
-        struct app_sample s;
+        struct sensor_sample s;
         struct app_corrected c;
         struct app_result res;
         struct tilt_input ti;
@@ -481,8 +496,8 @@ int main(int argc, char **argv)
             ti.accel_g[k] = c.accel_g[k];
             ti.gyro_dps[k] = c.gyro_dps[k];
         }
-        ti.flags = ((c.flags & APP_S_GYRO_SAT) ? TILT_IN_GYRO_SAT_X | TILT_IN_GYRO_SAT_Y : 0u) |
-                   ((c.flags & APP_S_ACCEL_SAT) ? TILT_IN_ACCEL_SAT : 0u);
+        ti.flags = ((c.flags & SENSOR_S_GYRO_SAT) ? TILT_IN_GYRO_SAT_X | TILT_IN_GYRO_SAT_Y : 0u) |
+                   ((c.flags & SENSOR_S_ACCEL_SAT) ? TILT_IN_ACCEL_SAT : 0u);
         /* The real step of this row (a gap integrates over its whole length, or restarts). */
         err = tilt_step(&tilt, &ti, (uint32_t)fmin(fmax(dt * 1e9 + 0.5, 1.0), 4294967295.0), &to);
         if (err != INC_OK) {

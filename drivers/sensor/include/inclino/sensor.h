@@ -122,8 +122,8 @@ int sensor_wait_ready(const struct sensor *s, uint32_t timeout_ns);
 int sensor_read(const struct sensor *s, struct sensor_sample *out);
 int sensor_read_diag(const struct sensor *s, struct sensor_diag *out);
 int sensor_self_test(const struct sensor *s, struct sensor_diag *out);
-int sensor_identity(const struct sensor *s, struct sensor_identity *out);
-int sensor_info(const struct sensor *s, struct sensor_info *out);
+int sensor_get_identity(const struct sensor *s, struct sensor_identity *out);
+int sensor_get_info(const struct sensor *s, struct sensor_info *out);
 
 /* Wait for the next sample and read it; a stale read (INC_ERR_STALE) is retried once after the
  * next data-ready. */
