@@ -71,7 +71,11 @@ int sensor_get_info(const struct sensor *s, struct sensor_info *out)
 
 int sensor_next(const struct sensor *s, uint32_t timeout_ns, struct sensor_sample *out)
 {
-    int err = sensor_wait_ready(s, timeout_ns);
+    int err;
+    if (out == NULL) {
+        return INC_ERR_NULL; /* before the wait: no sample is consumed for nothing */
+    }
+    err = sensor_wait_ready(s, timeout_ns);
     if (err == INC_OK) {
         err = sensor_read(s, out);
         if (err == INC_ERR_STALE) {
@@ -79,6 +83,6 @@ int sensor_next(const struct sensor *s, uint32_t timeout_ns, struct sensor_sampl
             if (err == INC_OK) err = sensor_read(s, out);
         }
     }
-    if (err != INC_OK && out != NULL) sample_clear(out);
+    if (err != INC_OK) sample_clear(out);
     return err;
 }
