@@ -290,7 +290,7 @@ static int discard_outputs(struct adis16255 *dev)
     static const uint8_t addrs[2] = {ADIS16255_REG_GYRO_OUT, ADIS16255_REG_TEMP_OUT};
     uint16_t w[2];
     int err = adis_read_regs(&dev->spi, addrs, w, 2u);
-    adis_dr_sync(dev->cfg.hal, &dev->dr); /* drop the edges seen so far */
+    sensor_dr_sync(dev->cfg.hal, &dev->dr); /* drop the edges seen so far */
     return err;
 }
 
@@ -420,7 +420,7 @@ int adis16255_init(struct adis16255 *dev, const struct adis16255_cfg *cfg)
     dev->sensor_missed = 0u;
     dev->id_check = ADIS16255_ID_OK;
     dev->busy_until_ns = 0;
-    adis_dr_reset(&dev->dr);
+    sensor_dr_reset(&dev->dr);
     dev->status.raw = 0;
     err = check_cfg(cfg, &sens_avg);
     if (err != INC_OK) {
@@ -474,10 +474,10 @@ int adis16255_init(struct adis16255 *dev, const struct adis16255_cfg *cfg)
     }
     if (err == INC_OK && cfg->dr_pin != HAL_PIN_NONE) {
         err = hal_irq_attach(cfg->hal, cfg->dr_pin,
-                             cfg->dr_active_high ? HAL_EDGE_RISING : HAL_EDGE_FALLING, adis_dr_isr,
-                             &dev->dr);
+                             cfg->dr_active_high ? HAL_EDGE_RISING : HAL_EDGE_FALLING,
+                             sensor_dr_isr, &dev->dr);
         dev->dr_attached = err == INC_OK;
-        adis_dr_sync(dev->cfg.hal, &dev->dr);
+        sensor_dr_sync(dev->cfg.hal, &dev->dr);
     }
     if (err != INC_OK) {
         dev->ready = false;
@@ -553,7 +553,7 @@ uint32_t adis16255_dr_timeout_us(const struct adis16255 *dev)
 static int wait_edge(struct adis16255 *dev, uint64_t deadline_ns, uint32_t *missed)
 {
     uint32_t pending = 0;
-    int err = adis_dr_wait(dev->cfg.hal, &dev->dr, deadline_ns, &pending);
+    int err = sensor_dr_wait(dev->cfg.hal, &dev->dr, deadline_ns, &pending);
     *missed = err == INC_OK ? pending - 1u : 0u;
     return err;
 }

@@ -886,12 +886,12 @@ int adis_imu_dr_config(struct adis_imu *dev, bool enable, enum adis_imu_dr_line 
     }
     if (dev->cfg.dr_pin != HAL_PIN_NONE) {
         err = hal_irq_attach(hal, dev->cfg.dr_pin, active_low ? HAL_EDGE_FALLING : HAL_EDGE_RISING,
-                             enable ? adis_dr_isr : NULL, &dev->dr);
+                             enable ? sensor_dr_isr : NULL, &dev->dr);
         if (err != INC_OK) {
             return err;
         }
     }
-    adis_dr_sync(hal, &dev->dr);
+    sensor_dr_sync(hal, &dev->dr);
     dev->dr_enabled = enable;
     dev->dr_line = (uint8_t)line;
     dev->dr_active_low = active_low;
@@ -915,7 +915,7 @@ int adis_imu_wait_ready(struct adis_imu *dev, uint32_t timeout_ns, uint32_t *mis
         timeout_ns = 3u * adis_imu_current_period_ns(dev);
     }
     deadline = hal_now_ns(hal) + timeout_ns;
-    err = adis_dr_wait(hal, &dev->dr, deadline, &pending);
+    err = sensor_dr_wait(hal, &dev->dr, deadline, &pending);
     if (err == INC_ERR_TIMEOUT) {
         dev->timeouts++;
     }
@@ -931,7 +931,7 @@ int adis_imu_dr_flush(struct adis_imu *dev)
     if (err != INC_OK) {
         return err;
     }
-    adis_dr_sync(dev->cfg.hal, &dev->dr);
+    sensor_dr_sync(dev->cfg.hal, &dev->dr);
     return INC_OK;
 }
 

@@ -211,7 +211,7 @@ int sca3000_init(struct sca3000 *dev, const struct sca3000_cfg *cfg)
     dev->revid = 0;
     dev->status = 0;
     dev->int_armed = false;
-    dev->int_pending = false;
+    sensor_dr_reset(&dev->int_edges);
     dev->pace_started = false;
     dev->next_ns = dev->sample_ns = 0u;
     dev->pace_missed = 0u;
@@ -716,12 +716,6 @@ int sca3000_ring_read(struct sca3000 *dev, int16_t *values, size_t cap, size_t *
     return INC_OK;
 }
 
-static void int_callback(void *arg)
-{
-    struct sca3000 *dev = arg;
-    dev->int_pending = true;
-}
-
 int sca3000_int_config(struct sca3000 *dev, uint8_t sources, bool active_high)
 {
     const uint8_t ring = SCA3000_INT_RING_3_4 | SCA3000_INT_RING_1_2;
@@ -739,10 +733,12 @@ int sca3000_int_config(struct sca3000 *dev, uint8_t sources, bool active_high)
         return err;
     }
     dev->int_active_high = active_high;
-    dev->int_pending = false;
     if (dev->int_pin != HAL_PIN_NONE) {
+        /* the data-ready helper of every driver counts the INT edges (inclino/sensor.h) */
+        sensor_dr_sync(dev->hal, &dev->int_edges);
         err = hal_irq_attach(dev->hal, dev->int_pin,
-                             active_high ? HAL_EDGE_RISING : HAL_EDGE_FALLING, int_callback, dev);
+                             active_high ? HAL_EDGE_RISING : HAL_EDGE_FALLING, sensor_dr_isr,
+                             &dev->int_edges);
         if (err != INC_OK) {
             return err;
         }
@@ -788,20 +784,13 @@ int sca3000_wait_int(struct sca3000 *dev, uint64_t deadline_ns)
     if (!dev->int_armed) {
         return INC_ERR_STATE;
     }
-    for (;;) {
-        uint32_t key = hal_crit_enter(dev->hal);
-        bool pending = dev->int_pending;
-        dev->int_pending = false;
-        hal_crit_exit(dev->hal, key);
-        if (pending || int_line_active(dev)) {
-            return INC_OK;
-        }
-        err = hal_irq_wait(dev->hal, deadline_ns);
-        if (err == INC_ERR_TIMEOUT) {
-            return int_line_active(dev) ? INC_OK : INC_ERR_TIMEOUT;
-        }
-        if (err != INC_OK) {
-            return err;
-        }
+    if (int_line_active(dev)) {
+        sensor_dr_sync(dev->hal, &dev->int_edges); /* active now: the edges so far are seen */
+        return INC_OK;
     }
+    err = sensor_dr_wait(dev->hal, &dev->int_edges, deadline_ns, NULL);
+    if (err == INC_ERR_TIMEOUT && int_line_active(dev)) {
+        return INC_OK;
+    }
+    return err;
 }

@@ -236,7 +236,7 @@ struct adis16255 {
     uint16_t msc_ctrl;
     bool fast;              /* SCLK/stall for >= 64 SPS in use */
     uint64_t busy_until_ns; /* the part is busy with a command the driver issued */
-    struct adis_dr dr;      /* data-ready edges seen and consumed (wait_sample) */
+    struct sensor_dr dr;    /* data-ready edges seen and consumed (wait_sample) */
     bool dr_attached;
     bool ready;
     enum adis16255_id_check id_check; /* the identity check that failed at init */

@@ -446,7 +446,7 @@ struct adis_imu {
     uint16_t last_diag;     /* last DIAG_STAT read (it clears on read [U]) */
     uint16_t init_diag;     /* DIAG_STAT read at init (power-up flags), not an error */
     uint64_t busy_until_ns; /* the part ignores the bus until then */
-    struct adis_dr dr;      /* data-ready edges seen and consumed (wait_dr) */
+    struct sensor_dr dr;    /* data-ready edges seen and consumed (wait_dr) */
     /* statistics */
     uint32_t bursts, reg_reads, bus_errors, device_errors, stale_reads, timeouts;
     uint32_t sensor_missed; /* sensor ops: samples lost since the last sample handed out */

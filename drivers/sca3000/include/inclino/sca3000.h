@@ -180,7 +180,7 @@ struct sca3000 {
     uint8_t int_mask; /* INT_MASK as last written and verified */
     bool int_armed;   /* sca3000_int_config() done */
     bool int_active_high;
-    volatile bool int_pending; /* set by the INT callback */
+    struct sensor_dr int_edges; /* INT edges, counted by sensor_dr_isr (inclino/sensor.h) */
     /* output pacing (sca3000_wait_ready) */
     uint64_t next_ns;     /* earliest time of the next sample */
     uint64_t sample_ns;   /* time of the sample the last wait ended at */

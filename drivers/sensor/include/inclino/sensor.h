@@ -22,6 +22,7 @@
 
 #include "inclino/error.h"
 #include "inclino/fx.h"
+#include "inclino/hal.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -134,6 +135,40 @@ int sensor_get_info(const struct sensor *s, struct sensor_info *out);
 /* Wait for the next sample and read it; a stale read (INC_ERR_STALE) is retried once after the
  * next wait. On any error *out is zeroed. INC_ERR_NULL for a NULL out, before any wait. */
 int sensor_next(const struct sensor *s, uint32_t timeout_ns, struct sensor_sample *out);
+
+/* ---- Data-ready edges ------------------------------------------------------------------ */
+
+/*
+ * Data-ready edges, counted in interrupt context and consumed by the driver: the one data-ready
+ * helper of every driver (ADIS16255 and ADIS1636x/1640x data-ready, the SCA3000's INT line). The part pulses its data-ready line once per sample; the interrupt handler
+ * only increments `count`, so an edge is never lost and edges the driver did not wait for are
+ * counted (a missed sample is reported, not hidden). Unsigned wrap-around is harmless: only
+ * count - taken is used.
+ */
+struct sensor_dr {
+    volatile uint32_t count; /* edges seen (written in interrupt context only) */
+    uint32_t taken;          /* count when the driver last consumed the edges */
+};
+
+/* Zero both counters (no interrupt may be attached yet). */
+void sensor_dr_reset(struct sensor_dr *dr);
+
+/* The interrupt handler to pass to hal_irq_attach, with arg = the struct sensor_dr. */
+void sensor_dr_isr(void *arg);
+
+/* Forget the edges seen so far (taken = count, in a critical section). */
+void sensor_dr_sync(const struct hal *hal, struct sensor_dr *dr);
+
+/*
+ * Wait until at least one edge has come since the last consumption, or until the HAL clock
+ * reaches deadline_ns. On an edge: consumes all pending edges, *pending (may be NULL) = their
+ * number (>= 1; > 1 means samples were missed), INC_OK. At the deadline with no edge:
+ * *pending = 0, INC_ERR_TIMEOUT. An edge that arrives exactly at the deadline is taken. Between
+ * checks it sleeps in hal_irq_wait, which may return at any attached interrupt (another part's
+ * too): it looks again either way.
+ */
+int sensor_dr_wait(const struct hal *hal, struct sensor_dr *dr, uint64_t deadline_ns,
+                   uint32_t *pending);
 
 #ifdef __cplusplus
 }
