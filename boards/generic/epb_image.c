@@ -145,8 +145,7 @@ void epb_image_run(const struct hal *hal)
     /* Static, not on the stack: the M0+ image has 1 KiB of stack (docs/build.md). */
     static struct app_cfg cfg;
     static struct app_result r;
-    /* The default budget (docs/epb-demo.md, "Error budget") and stillness thresholds at the
-     * ADIS default 819.2 SPS. */
+    /* [ADI-EPB]'s budget and the default stillness thresholds at the ADIS default 819.2 SPS. */
     (void)app_cfg_default(&cfg, adis_imu_sample_rate_msps(ADIS_IMU_SMPL_PRD_DEFAULT));
     for (;;) {
         unsigned i;

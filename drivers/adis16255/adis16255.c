@@ -1,8 +1,8 @@
 /*
  * adis16255.c - ADIS16250/ADIS16255 gyroscope driver (see adis16255.h).
  *
- * Sources: sensors.md §2 (ADIS16250/55 Rev B pp. 11, 12, 15 = A2, A3, A4; Linux adis16260 = A6;
- * staging adis16255 = A1), §4 (the Linux ADIS library's procedures). Seed 001 (SCA3000 +
+ * Sources: docs/sensor-facts.md §2 (ADIS16250/55 Rev B pp. 11, 12, 15 = A2, A3, A4; Linux adis16260 = A6;
+ * staging adis16255 = A1), §4 (the Linux ADIS library's procedures). [KF-SCA3000] (SCA3000 +
  * ADIS16255 over bit-banged SPI) notes that "the 16255 needed configuration to reduce its bias":
  * hence SENS_AVG filtering, GYRO_OFF and autonull are first-class here.
  */
@@ -222,7 +222,7 @@ static int alive(struct adis16255 *dev, uint16_t *last)
 
 /*
  * Wait until the part answers: first the busy time the driver knows of, then poll. The part
- * gives no busy flag (sensors.md §2: garbage or no answer while busy), so polling is the only
+ * gives no busy flag (docs/sensor-facts.md §2: garbage or no answer while busy), so polling is the only
  * way to learn that a command took longer than its [U] duration, or that the part is busy for
  * a reason the driver did not cause. Polling a busy part is a bus access the part ignores.
  */
@@ -323,7 +323,7 @@ static int write_config(struct adis16255 *dev)
 }
 
 /*
- * Identity and plausibility without a PROD_ID (none exists on the ADIS16250/55, sensors.md
+ * Identity and plausibility without a PROD_ID (none exists on the ADIS16250/55, docs/sensor-facts.md
  * §2.3): stuck lines read uniform words; a real part has a 4.75..5.25 V supply reading, zeros in
  * the reserved bits of GYRO_SCALE (12-bit), SMPL_PRD (8-bit), MSC_CTRL and STATUS, and a
  * SENS_AVG with exactly one range bit.

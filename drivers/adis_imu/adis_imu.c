@@ -3,7 +3,7 @@
  *
  * Bus: every register access goes through the shared ADIS protocol (drivers/adis: pipelined
  * reads, byte writes). The driver owns the timing of its struct spi_dev: the part's SCLK limit
- * and stall depend on its mode, which SMPL_PRD selects (sensors.md §3.1: <= 2 MHz while
+ * and stall depend on its mode, which SMPL_PRD selects (docs/sensor-facts.md §3.1: <= 2 MHz while
  * SMPL_PRD[7:0] <= 0x09, <= 300 kHz otherwise) and on the kind of read (burst <= 1 MHz, B1/B12).
  */
 #include "inclino/adis_imu.h"
@@ -11,7 +11,7 @@
 #define NS_PER_MS 1000000ull
 
 /* The part's channel -> register address, per family (0 = the family has no such channel;
- * address 0x00 is FLASH_CNT, never an output). sensors.md §3.2. */
+ * address 0x00 is FLASH_CNT, never an output). docs/sensor-facts.md §3.2. */
 static const uint8_t chan_addr[2][ADIS_IMU_CH_COUNT] = {
     /* 1636x: SUPPLY, gyro xyz, accel xyz, (no magn), XTEMP YTEMP ZTEMP, AUX_ADC */
     {0x02, 0x04, 0x06, 0x08, 0x0A, 0x0C, 0x0E, 0, 0, 0, 0x10, 0x12, 0x14, 0x16},
@@ -32,7 +32,7 @@ static void timing_for(bool low_power, bool burst, struct spi_timing *t)
     t->cs_setup_ns = ADIS_IMU_CS_SETUP_NS;
     t->cs_hold_ns = ADIS_IMU_CS_HOLD_NS;
     t->stall_ns = low_power ? ADIS_IMU_STALL_LOW_POWER_NS : ADIS_IMU_STALL_NORMAL_NS;
-    /* Burst words are separated by one SCLK period (sensors.md §3.1). */
+    /* Burst words are separated by one SCLK period (docs/sensor-facts.md §3.1). */
     t->gap_ns = burst ? (period > ADIS_IMU_BURST_GAP_NS ? period : ADIS_IMU_BURST_GAP_NS) : 0u;
 }
 
@@ -205,7 +205,7 @@ int adis_imu_init(struct adis_imu *dev, const struct adis_imu_cfg *cfg)
     }
     dev->cfg = *cfg;
     /* Start at the low-power limits: valid whatever mode the part is in (Linux does the same,
-     * sensors.md §4 "ADIS16400-specific setup"). */
+     * docs/sensor-facts.md §4 "ADIS16400-specific setup"). */
     dc.cs = cfg->cs;
     dc.mode = SPI_MODE_3;
     dc.bits = 16;
@@ -378,7 +378,7 @@ static int read_diag_raw(struct adis_imu *dev, uint16_t *diag)
 }
 
 /*
- * Judge a set of output words (sensors.md §3.3): a bus that cannot be a live part, then EA
+ * Judge a set of output words (docs/sensor-facts.md §3.3): a bus that cannot be a live part, then EA
  * (DIAG_STAT read and kept), then ND. `stuck` says the words looked like a stuck MISO.
  */
 static int sample_finish(struct adis_imu *dev, struct adis_imu_sample *out, const uint16_t *w,
@@ -434,7 +434,7 @@ int adis_imu_read_sample(struct adis_imu *dev, struct adis_imu_sample *out)
     timing_for(dev->low_power, true, &t);
     err = spi_dev_set_timing(&dev->spi, &t);
     if (err == INC_OK) {
-        /* DIN 0x3E00, then zeros while the part streams the outputs (sensors.md §3.1). */
+        /* DIN 0x3E00, then zeros while the part streams the outputs (docs/sensor-facts.md §3.1). */
         const uint16_t tx[1u + 12u] = {ADIS_IMU_BURST_CMD};
         err = spi_transfer(&dev->spi, tx, rx, n + 1u, SPI_CS_HOLD);
     }

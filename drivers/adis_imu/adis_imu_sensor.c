@@ -3,8 +3,8 @@
  * "Settings in force and the sensor interface"; docs/drivers-adis-imu.md, "Sensor interface").
  *
  * One sample = one data-ready edge + one burst read: the burst returns every output of one
- * sample set in one CS period, so the axes are coherent (docs/drivers-adis-imu.md, "Burst
- * read"). Conversions are the driver's, exact to 0.5 LSB Q16.
+ * sample set in one CS period, so the axes are coherent (docs/sensor-facts.md §3.1).
+ * Conversions are the driver's, exact to 0.5 LSB Q16.
  */
 #include <stddef.h>
 
@@ -69,7 +69,7 @@ int adis_imu_read_identity(struct adis_imu *dev, struct sensor_identity *out)
     }
     err = adis_imu_found(dev, &prod, NULL);
     if (err == INC_OK && dev->info->family == (uint8_t)ADIS_IMU_FAMILY_1636X) {
-        /* The 1636x has a serial number and lot ids (docs/calibration-storage.md, binding). */
+        /* The 1636x has a serial number and lot ids (the calrec.h binding table). */
         err = adis_imu_read_reg(dev, ADIS1636X_REG_SERIAL_NUM, &serial);
         if (err == INC_OK) err = adis_imu_read_reg(dev, ADIS1636X_REG_LOT_ID1, &lot1);
         if (err == INC_OK) err = adis_imu_read_reg(dev, ADIS1636X_REG_LOT_ID2, &lot2);

@@ -2,15 +2,15 @@
  * adis_imu_tables.c - what the driver knows about the parts, as data: variants, register maps,
  * DIAG_STAT names, and the pure raw -> physical conversions (see adis_imu.h).
  *
- * Sources: ../shared/reference/sensors.md §3.2 (map), §3.3 (scales), §3.4 (control registers,
- * timings), §3.5 (PROD_ID); seed 003 (offset register resolution, the x80 rule).
+ * Sources: docs/sensor-facts.md §3.2 (map), §3.3 (scales), §3.4 (control registers,
+ * timings), §3.5 (PROD_ID); [ADI-IMU-QS] (offset register resolution, the x80 rule).
  */
 #include "inclino/adis_imu.h"
 
 #include "inclino/fx.h"
 
 /*
- * Per-variant facts. Waits: Linux's sw_reset_ms / self_test_ms (sensors.md §3.4) are the longest
+ * Per-variant facts. Waits: Linux's sw_reset_ms / self_test_ms (docs/sensor-facts.md §3.4) are the longest
  * figures any source gives for each part (OPTEC's ADIS16405 reset is 100/170 ms, the ADIS16367's
  * 60/130 ms), so the driver takes them. The 16360/16365 use Linux's ADIS16300 table (290 ms).
  */
@@ -50,7 +50,7 @@ const char *adis_imu_variant_name(enum adis_imu_variant v)
     return vi != NULL ? vi->name : "unknown";
 }
 
-/* Register maps (sensors.md §3.2). Widths: outputs §3.3; offsets §3.4 (13-bit gyro: our
+/* Register maps (docs/sensor-facts.md §3.2). Widths: outputs §3.3; offsets §3.4 (13-bit gyro: our
  * choice, listed in docs/unconfirmed-facts.md); control registers by their used bits. */
 #define OUT_S(n, a, b)                   \
     {                                    \
@@ -213,7 +213,7 @@ void adis_imu_diag_decode(uint16_t diag, struct adis_imu_diag *out)
     out->any = (diag & ADIS_IMU_DIAG_ERRORS) != 0u;
 }
 
-/* ---- sample rate (sensors.md §3.4 SMPL_PRD) ---- */
+/* ---- sample rate (docs/sensor-facts.md §3.4 SMPL_PRD) ---- */
 
 /* tB = 1/1638.4 s = 610351.5625 ns = 9765625/16 ns exactly, so periods are exact in 1/16 ns. */
 #define TB_SIXTEENTHS_NS 9765625ull
@@ -266,8 +266,8 @@ static bool lsb_ok(uint32_t lsb_ug)
 
 int adis_imu_gyro_dps_from_counts(int32_t counts, enum adis_imu_range range, int32_t *dps_q16)
 {
-    /* 0.05 deg/s x 65536 = 32768 / 10; the LSB halves with each smaller range ([ADIS16405
-     * datasheet], docs/drivers-adis-imu.md "Conversions"). */
+    /* 0.05 deg/s x 65536 = 32768 / 10; the LSB halves with each smaller range
+     * (docs/sensor-facts.md §3.3 [D]). */
     uint32_t den;
     if (dps_q16 == NULL) {
         return INC_ERR_NULL;
@@ -328,7 +328,7 @@ int32_t adis_imu_aux_v_from_counts(int32_t counts)
 
 int16_t adis_imu_gyro_off_counts_from_dps(int32_t dps_q16, bool *saturated)
 {
-    /* x80 ("multiply by 80, round", docs/gyro-calibration.md), from Q16.16. */
+    /* x80 ([ADI-IMU-QS]: "multiply by 80, round"), from Q16.16. */
     return (int16_t)adis_offset_counts((int64_t)dps_q16 * ADIS_IMU_GYRO_OFF_PER_DPS, 65536u,
                                        ADIS_IMU_GYRO_OFF_BITS, saturated);
 }

@@ -1,12 +1,12 @@
 /*
  * sca3000.c - SCA3000 driver on struct spi_dev (see sca3000.h for the API and the integrity
- * rules). Register map, framing and the unlock sequence: ../shared/reference/sensors.md 1.2-1.5;
+ * rules). Register map, framing and the unlock sequence: docs/sensor-facts.md 1.2-1.5;
  * modes and rates: 1.6; the seed (001) notes that the part needs no parameter set-up to give
  * data, so init only puts it in a known state.
  */
 #include "inclino/sca3000.h"
 
-/* Output data rate in mHz per variant and MODE[1:0] (sensors.md 1.6, Linux chip table). */
+/* Output data rate in mHz per variant and MODE[1:0] (docs/sensor-facts.md §1.6, Linux chip table). */
 static const uint32_t odr_table[4][3] = {
     {250000u, 250000u, 0u},     /* D01: normal, bypass */
     {125000u, 62500u, 0u},      /* E02: normal, narrow */
@@ -58,7 +58,7 @@ static int read_raw(struct sca3000 *dev, uint8_t addr, uint8_t *buf, size_t n)
     return INC_OK;
 }
 
-/* [cmd | write][val] in one CS period (sensors.md 1.2: one register per frame). */
+/* [cmd | write][val] in one CS period (docs/sensor-facts.md §1.2: one register per frame). */
 static int write_raw(struct sca3000 *dev, uint8_t addr, uint8_t val)
 {
     const uint16_t tx[2] = {(uint16_t)(((unsigned)addr << 2) | SCA3000_CMD_WRITE), val};
@@ -217,7 +217,7 @@ int sca3000_init(struct sca3000 *dev, const struct sca3000_cfg *cfg)
     dev->pace_missed = 0u;
     dev->bus_errors = dev->frame_errors = dev->revid_confirms = 0;
     if (cfg->variant == SCA3000_E01) {
-        return INC_ERR_UNSUPPORTED; /* no source describes the E01 (sensors.md 1.1) */
+        return INC_ERR_UNSUPPORTED; /* no source describes the E01 (docs/sensor-facts.md §1.1) */
     }
     if ((unsigned)cfg->variant > (unsigned)SCA3000_E05 || cfg->spi.bits != 8u ||
         (cfg->spi.mode != SPI_MODE_3 && cfg->spi.mode != SPI_MODE_0) ||
@@ -265,7 +265,7 @@ int sca3000_init(struct sca3000 *dev, const struct sca3000_cfg *cfg)
     if (err != INC_OK) {
         return err;
     }
-    /* Acknowledge stale events (Linux clean setup, sensors.md 1.6). */
+    /* Acknowledge stale events (Linux clean setup, docs/sensor-facts.md §1.6). */
     err = read_raw(dev, SCA3000_REG_INT_STATUS, &v, 1u);
     if (err != INC_OK) {
         return err;
@@ -411,10 +411,10 @@ int sca3000_read_accel(struct sca3000 *dev, int16_t xyz[3])
         return INC_ERR_NULL;
     }
     if ((dev->mode_reg & SCA3000_MODE_MEAS_MASK) == SCA3000_MODE_MOTION) {
-        return INC_ERR_STATE; /* no acceleration output in motion detection (sensors.md 1.6) */
+        return INC_ERR_STATE; /* no acceleration output in motion detection (docs/sensor-facts.md §1.6) */
     }
     /* From X_MSB the address decrements X_MSB, X_LSB, then wraps to Z_MSB, Z_LSB, Y_MSB, Y_LSB
-     * (sensors.md 1.2): all three axes of one sample in one CS period. */
+     * (docs/sensor-facts.md §1.2): all three axes of one sample in one CS period. */
     err = read_raw(dev, SCA3000_REG_X_MSB, b, 6u);
     if (err == INC_OK) {
         err = check_pattern(dev, b, 6u);
@@ -455,7 +455,7 @@ int sca3000_read_temp(struct sca3000 *dev, uint16_t *raw9)
         return INC_ERR_NULL;
     }
     if (dev->variant != SCA3000_D01) {
-        return INC_ERR_UNSUPPORTED; /* E0x: no temperature sensor (sensors.md 1.1) */
+        return INC_ERR_UNSUPPORTED; /* E0x: no temperature sensor (docs/sensor-facts.md §1.1) */
     }
     err = read_raw(dev, SCA3000_REG_TEMP_MSB, b, 2u);
     if (err == INC_OK) {
@@ -507,7 +507,7 @@ int sca3000_unlock(struct sca3000 *dev)
     if (err != INC_OK || (dev->status & SCA3000_STATUS_UNLOCKED) != 0u) {
         return err;
     }
-    /* Three separate CS periods: the part does not take the sequence in one (sensors.md 1.2). */
+    /* Three separate CS periods: the part does not take the sequence in one (docs/sensor-facts.md §1.2). */
     for (i = 0; i < 3u && err == INC_OK; i++) {
         err = write_raw(dev, SCA3000_REG_UNLOCK, seq[i]);
     }

@@ -1,8 +1,8 @@
 /*
  * sca3000_conv.c - pure SCA3000 conversions (see sca3000.h for formats, ranges and rounding).
  *
- * Data alignment: sensors.md 1.4 (Linux realbits 13 / shift 3 for direct reads, realbits 11 /
- * shift 5 for the ring; temperature 9 bits at [13:5]). Sensitivity: sensors.md 1.1. Every
+ * Data alignment: docs/sensor-facts.md §1.4 (Linux realbits 13 / shift 3 for direct reads, realbits 11 /
+ * shift 5 for the ring; temperature 9 bits at [13:5]). Sensitivity: docs/sensor-facts.md §1.1. Every
  * signed value is built from unsigned fields by subtraction, never by shifting a negative
  * number, so the results are the same on every compiler and target.
  */

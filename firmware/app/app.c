@@ -9,12 +9,12 @@
  *    temp_step_c: cal_acc_set_temp costs two divisions per axis, cal_acc_apply none (cal.h).
  *  - The stillness windows are aligned with the blocks (avg_n is a multiple of the window), so
  *    "still over the block" is exactly "no window of the block failed, and at rest at its end".
- *  - Seed 000's noise term assumes white noise of a known rms. The vehicle adds engine vibration
+ *  - [ADI-EPB]'s noise term assumes white noise of a known rms. The vehicle adds engine vibration
  *    and passengers to the part's own noise, so the rms measured in the block's stillness
  *    windows is used when it is larger than the rated one: a vibrating car gets a wider bound,
  *    never a falsely tight one. The window variance is rescaled by W / (W - 1) (the detector's
  *    population variance is biased low by that factor) and its root rounded up.
- *  - Seed 000's Table 1 lists the temperature term as compensated only by the three-point
+ *  - [ADI-EPB]'s Table 1 lists the temperature term as compensated only by the three-point
  *    calibration; the compensated term is used only where the record's model was calibrated
  *    (its range), otherwise the uncompensated one.
  */

@@ -2,9 +2,9 @@
  * app_eol.c - the on-device end-of-line steps of the EPB application (see app.h).
  *
  * The faces are averaged from the RAW samples (nominal-scaled, no calibration applied, whatever
- * record is loaded): the calibration is being made from them. Seed 000's flip gives offset and
+ * record is loaded): the calibration is being made from them. [ADI-EPB]'s flip gives offset and
  * gain per axis (cal_six_position, which also checks that each face is the one claimed); the
- * gyro offset comes from the same still intervals (seed 003: zero rotation, thermally settled),
+ * gyro offset comes from the same still intervals ([ADI-IMU-QS]: zero rotation, thermally settled),
  * as the mean of the six faces' means so that gravity's small effect on a gyro (g-sensitivity)
  * averages out over opposite faces.
  */

@@ -24,7 +24,7 @@ static void test_registers(void)
     CHECK(sat);
     CHECK_EQ_INT(adis_offset_counts(-40LL * 65536 * 273, 327680u, 12, &sat), -2048);
     CHECK(sat);
-    /* ADIS1636x/1640x XGYRO_OFF, 13 bits, x80 (seed 003): 0.03125 deg/s = 2.5 LSB -> 3. */
+    /* ADIS1636x/1640x XGYRO_OFF, 13 bits, x80 ([ADI-IMU-QS]): 0.03125 deg/s = 2.5 LSB -> 3. */
     CHECK_EQ_INT(adis_offset_counts(2048LL * 80, 65536u, 13, &sat), 3);
     CHECK(!sat);
     CHECK_EQ_INT(adis_offset_counts(-2048LL * 80, 65536u, 13, &sat), -3);

@@ -1,7 +1,7 @@
 /*
  * Gyro bias commands of the ADIS1636x/1640x, measured on the simulated part: the error-model
  * hook gives the gyros a bias (and, for precision autonull, seeded white noise); the driver runs
- * the procedures of seed 003; the test reads the bias actually achieved from the model
+ * the procedures of [ADI-IMU-QS]; the test reads the bias actually achieved from the model
  * (sim_adis_imu_gyro_dps: the output before quantisation) and the offsets from the part.
  *
  * Also the seed's manual calibration over 100 s at 819.2 SPS through the pin-level bus
@@ -90,7 +90,7 @@ static void test_error_model_hook(void)
     CHECK_EQ_INT(fx_violations(), 0);
 }
 
-/* Seed 003 autonull: SMPL_PRD = 0x01, SENS_AVG = 0x06, 200 ms for the taps to fill, then
+/* [ADI-IMU-QS] autonull: SMPL_PRD = 0x01, SENS_AVG = 0x06, 200 ms for the taps to fill, then
  * GLOB_CMD[0]. The part writes -(output) in 0.0125 deg/s LSB: the bias is removed to within half
  * an offset LSB (0.00625 deg/s). */
 static void test_autonull(void)
@@ -182,7 +182,7 @@ static void test_precision_autonull(void)
 }
 
 /*
- * Seed 003 manual calibration: average 82 000 samples at 819.2 SPS (100 s), x80, round, write,
+ * [ADI-IMU-QS] manual calibration: average 82 000 samples at 819.2 SPS (100 s), x80, round, write,
  * GLOB_CMD[3]. Three gyro registers (4 frames) per data-ready, through the pin-level bus.
  */
 static void test_manual_calibration_100s(void)

@@ -285,7 +285,7 @@ static void test_tables(void)
     for (f = 0; f < 2u; f++) {
         const struct adis_imu_reg_desc *m = adis_imu_reg_map((enum adis_imu_family)f, &n);
         REQUIRE(m != NULL);
-        CHECK_EQ_INT(n, f == 0u ? 35 : 39); /* sensors.md §3.2 */
+        CHECK_EQ_INT(n, f == 0u ? 35 : 39); /* docs/sensor-facts.md §3.2 */
         for (i = 0; i < n; i++) {
             CHECK_EQ_INT(m[i].addr & 1u, 0);
             CHECK(m[i].addr <= 0x7Eu);

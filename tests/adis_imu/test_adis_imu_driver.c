@@ -3,7 +3,7 @@
  *
  * Every normal case asserts zero timing/protocol violations; the cases that break a rule on
  * purpose assert the violation they expect. Expected register counts are worked out here from
- * the datasheet scales (sensors.md §3.3), not taken from the model.
+ * the datasheet scales (docs/sensor-facts.md §3.3), not taken from the model.
  */
 #include "fixture.h"
 #include "unit.h"

@@ -141,7 +141,7 @@ static void test_sca3000_part_a(void)
                0.003);
     park(10.0, true, -1.0);
     /* At the calibration temperature: no model, but no drift either beyond the hysteresis
-     * (0.1 mg): the test's budget says so, the rest is seed 000's. */
+     * (0.1 mg): the test's budget says so, the rest is [ADI-EPB]'s. */
     cfg.budget.temp_uncomp_g = FX_Q16_ONE / 200; /* 5 mg */
     REQUIRE(epb_rig_power_up(&rig, &cfg) == INC_OK);
     CHECK_OK(rig.app.cal_status);

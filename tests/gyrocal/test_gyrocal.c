@@ -2,12 +2,12 @@
  * Gyro bias calibration (firmware/services/gyrocal) on the simulated ADIS1636x/1640x: defaults, gating
  * (refuses when moving or not settled, nothing written), each mode's result measured on the part
  * (the achieved bias: error-model bias + the part's offset register + the processor-side
- * correction), the exact command words (GLOB_CMD bit 3 = 0xBE08, never seed 003's 0xBE04),
+ * correction), the exact command words (GLOB_CMD bit 3 = 0xBE08, never [ADI-IMU-QS]'s 0xBE04),
  * saturation (flagged, INC_ERR_RANGE), and aborts (motion during the manual average, during the
  * autonull fill, during the busy precision autonull; a temperature ramp), each leaving the old
  * offsets in the part.
  *
- * Noise here is white (the seed-003 density) plus a constant bias per axis, so bounds are exact
+ * Noise here is white (the [ADI-IMU-QS] density) plus a constant bias per axis, so bounds are exact
  * statistics; the full ADIS noise model (flicker, random walk) is the benchmark's
  * (bench_gyrocal, and its small seeded CTest run gyrocal_bench_small).
  * Under QEMU and in the sanitizer build (UNIT_REDUCED) the averages and the thermal window are
@@ -313,7 +313,7 @@ static void test_manual(void)
     CHECK_EQ_INT(res.samples, MANUAL_N);
     CHECK_EQ_INT(res.missed, 0);
     CHECK_EQ_INT(rig_cmd_seen(0xBE08), 1); /* GLOB_CMD[3]: bit 3 */
-    CHECK_EQ_INT(rig_cmd_seen(0xBE04), 0); /* never seed 003's typo word (AUX DAC latch) */
+    CHECK_EQ_INT(rig_cmd_seen(0xBE04), 0); /* never [ADI-IMU-QS]'s typo word (AUX DAC latch) */
     CHECK_EQ_INT(flash_count(), fc + 1u);
     c = gyrocal_correction_get(&rig.gc);
     CHECK(c.valid);
@@ -358,7 +358,7 @@ static void test_manual_processor_only(void)
         CHECK_NEAR(res.proc_corr[i], -320.0 * bias3[i], 320.0 * (4.0 * se) + 1.0);
     }
 #if !UNIT_REDUCED
-    CHECK_EQ_INT(res.residual_q16[0], 397); /* sqrt(393^2 + 205^2 / 12): seed 003's 0.006 */
+    CHECK_EQ_INT(res.residual_q16[0], 397); /* sqrt(393^2 + 205^2 / 12): [ADI-IMU-QS]'s 0.006 */
 #endif
     rig_bias_mean(1.0, b);
     for (i = 0; i < 3u; i++) {
@@ -367,7 +367,7 @@ static void test_manual_processor_only(void)
     CHECK_EQ_INT(rig_violations(), 0);
 }
 
-/* A short manual average (2 s): the measured standard error exceeds seed 003's 0.006 deg/s and
+/* A short manual average (2 s): the measured standard error exceeds [ADI-IMU-QS]'s 0.006 deg/s and
  * becomes the residual estimate. The part filters with its default SENS_AVG (M = 2), which
  * lowers the per-sample noise but not the noise of the mean; the estimate must not be fooled
  * (it would read 0.41 of the truth). */

@@ -255,7 +255,7 @@ static void test_ring_fifo_and_int(void)
 
 static void test_output_data_rates(void)
 {
-    /* mHz per variant and MODE[1:0] (sensors.md 1.6). */
+    /* mHz per variant and MODE[1:0] (docs/sensor-facts.md §1.6). */
     static const uint32_t want[4][3] = {
         {250000, 250000, 0}, {125000, 62500, 0}, {100000, 50000, 400000}, {200000, 50000, 400000}};
     unsigned v, m;

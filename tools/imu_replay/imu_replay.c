@@ -6,7 +6,7 @@
  * Every row is quantised to the chosen part's LSBs and output range and converted back with the
  * driver's own conversions, so the firmware sees exactly what it would read from that part; then
  * the EPB application (firmware/app: calibration, stillness, block average, slope with its bound)
- * and the tilt filter (firmware/signal/tilt: roll and pitch, seed 004 step 4) run on it, sample by
+ * and the tilt filter (firmware/signal/tilt: roll and pitch, [CN110567483] step 4) run on it, sample by
  * sample, with the real time step of each row. The estimates are written as CSV.
  *
  * Input: lines starting with '#' and blank lines are skipped; an optional header line (every
@@ -199,7 +199,7 @@ static void usage(void)
         "  --rate SPS         nominal sample rate (default: from the median time step)\n"
         "  --gap-factor F     a step longer than F nominal periods is a gap (default 1.5)\n"
         "  --revid N          SCA3000 REVID for the record binding (default 0x52)\n"
-        "  budget (default seed 000's Table 1, app_cfg_default):\n"
+        "  budget (default [ADI-EPB] Table 1, app_cfg_default):\n"
         "  --nonlin-mg X --temp-comp-mg X --temp-uncomp-mg X --offset-mg X --sens-ppm X --noise-mg X\n");
 }
 

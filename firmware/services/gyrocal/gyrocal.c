@@ -1,11 +1,11 @@
 /*
  * gyrocal.c - gyro bias calibration on the ADIS1636x/1640x driver (see inclino/gyrocal.h).
  *
- * Seed 003 ("optimising bias accuracy and stability") gives the three options and the
+ * [ADI-IMU-QS] ("optimising bias accuracy and stability") gives the three options and the
  * conditions: 819.2 SPS (SMPL_PRD = 0x01), thermal stability (read TEMP_OUT), zero rotation
  * including vibration, and more averaging for a better estimate (the Allan curve). Where the
  * seed's text and the fact sheet disagree (14- vs 13-bit offset, DIN 0xBE04 vs bit 3) the
- * driver's constants decide: 13 bits (sensors.md 3.4, the ADI example) and the GLOB_CMD bit.
+ * driver's constants decide: 13 bits (docs/sensor-facts.md §3.4, the ADI example) and the GLOB_CMD bit.
  *
  * Arithmetic: the manual mode keeps exact int64 sums of the output counts. With k = 80 x LSB
  * offset counts per output count (4, 2, 1 at +-300, 150, 75 deg/s), 80 x mean deg/s = k S / N,
@@ -81,7 +81,7 @@ int gyrocal_default_cfg(struct gyrocal_cfg *cfg, const struct adis_imu_variant_i
     lsb_ug = vi->accel_lsb_ug;
     cfg->still.window = ST_WINDOW;
     cfg->still.windows_required = 2u;
-    /* Seed 003: unfiltered gyro noise below 1 deg/s rms -> sd = 1e6 / lsb_udps counts. */
+    /* [ADI-IMU-QS]: unfiltered gyro noise below 1 deg/s rms -> sd = 1e6 / lsb_udps counts. */
     cfg->still.gyro_var_max = var_limit(1000000u, lsb_udps);
     /* [U] accelerometer noise: 10 mg rms assumed (docs/unconfirmed-facts.md). */
     cfg->still.accel_var_max = var_limit(10000u, lsb_ug);
@@ -93,7 +93,7 @@ int gyrocal_default_cfg(struct gyrocal_cfg *cfg, const struct adis_imu_variant_i
     cfg->thermal.avg_n = ST_WINDOW;                              /* 1 s points */
     cfg->thermal.span = 30u;                                     /* 30 s window */
     cfg->thermal.max_change = 1u;                                /* 1 TEMP_OUT LSB (0.136/0.14 C) */
-    cfg->settle_timeout_ms = 15u * 60u * 1000u;                  /* seed 003: up to 10-15 min */
+    cfg->settle_timeout_ms = 15u * 60u * 1000u;                  /* [ADI-IMU-QS]: up to 10-15 min */
     cfg->manual_samples = GYROCAL_MANUAL_SAMPLES;
     cfg->manual_to_register = true;
     cfg->flash_update = true;
@@ -543,7 +543,7 @@ static int run_autonull(struct gyrocal *g, struct gyrocal_result *res, enum adis
     if (err == INC_OK) {
         err = adis_imu_dr_flush(g->imu);
     }
-    /* 200 ms for the taps to fill (seed 003), watched by the detectors; then the window in
+    /* 200 ms for the taps to fill ([ADI-IMU-QS]), watched by the detectors; then the window in
      * progress is judged before the part changes its offsets (a step it would read as motion). */
     for (i = 0; err == INC_OK && i < fill; i++) {
         err = read_feed(g, &s, &res->missed);
@@ -864,7 +864,7 @@ static int run_verify(struct gyrocal *g, struct run *r, struct gyrocal_result *r
         return abort_restore(g, res, GYROCAL_ABORTED_VERIFY, r->prd, r->avg);
     }
     if (g->cfg.flash_update && r->manual_reg) {
-        /* GLOB_CMD[3]: the bit (DIN 0xBE08; docs/gyro-calibration.md, "Flash update"). */
+        /* GLOB_CMD[3]: the bit (DIN 0xBE08), not [ADI-IMU-QS]'s 0xBE04. */
         err = adis_imu_command(g->imu, ADIS_IMU_CMD_FLASH_UPDATE);
         if (err != INC_OK) {
             return fail_restore(g, res, err, r->prd, r->avg);

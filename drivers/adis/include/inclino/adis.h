@@ -4,7 +4,7 @@
  * struct spi_dev frames. (Their data-ready edge counting is every driver's: struct sensor_dr,
  * inclino/sensor.h.)
  *
- * Protocol (sensors.md §2.2, §3.1; ADIS16250/55 Rev B p. 11, ADIS1636x/1640x datasheets):
+ * Protocol (docs/sensor-facts.md §2.2, §3.1; ADIS16250/55 Rev B p. 11, ADIS1636x/1640x datasheets):
  *   - SPI mode 3, MSB first, 16-bit frames, CS toggled with the part's stall time between frames
  *     (the device's struct spi_timing carries it);
  *   - read: DIN = addr << 8 (bit 15 = 0); the whole 16-bit register comes out on DOUT during the

@@ -7,14 +7,14 @@
  * byte-wise writes (0x80 | address). It has no PROD_ID register: identity is checked by
  * plausibility (reserved bits, supply reading, write/read-back of the configuration).
  *
- * Outputs (sensors.md §2.3, ADIS16250/55 Rev B p. 12): GYRO_OUT 14-bit two's complement,
+ * Outputs (docs/sensor-facts.md §2.3, ADIS16250/55 Rev B p. 12): GYRO_OUT 14-bit two's complement,
  * TEMP_OUT 12-bit two's complement (0 = 25 °C), SUPPLY_OUT 12-bit binary, ANGL_OUT 14-bit.
  * Every output word carries ND (bit 15, new data since the last read) and EA (bit 14, error or
  * alarm: see STATUS). A sample whose ND is clear is reported stale (INC_ERR_STALE); a sample
  * with EA set makes the driver read and decode STATUS and return INC_ERR_DEVICE. Neither is ever
  * marked valid.
  *
- * Facts marked [U] in sensors.md are named constants here with the safe value; every one is
+ * Facts marked [U] in docs/sensor-facts.md are named constants here with the safe value; every one is
  * listed in docs/unconfirmed-facts.md.
  *
  * Units: physical values are Q16.16 fixed point (int32_t, 1.0 = 65536) in °/s, °C, V and °.
@@ -77,7 +77,7 @@ extern "C" {
 #define ADIS16255_FAST_NS_MAX 7u         /* NS <= 7 with TB = 0: >= 64 SPS, SCLK <= 2.5 MHz */
 
 /*
- * SENS_AVG [U] layout (by analogy with the ADIS1636x, sensors.md §2.3): bits 10..8 range code
+ * SENS_AVG [U] layout (by analogy with the ADIS1636x, docs/sensor-facts.md §2.3): bits 10..8 range code
  * (one bit set: 001 = ±80, 010 = ±160, 100 = ±320 °/s), bits 2..0 filter M (2^M taps). Other
  * bits zero.
  */

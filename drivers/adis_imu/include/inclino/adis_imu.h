@@ -9,11 +9,11 @@
  * caller-allocated (struct adis_imu), the configuration is a const struct, every fallible
  * function returns 0 or a negative enum inc_err code.
  *
- * Facts come from ../shared/reference/sensors.md §3-4 and seed 003; values the fact sheet marks
+ * Facts come from docs/sensor-facts.md §3-4 and [ADI-IMU-QS]; values the fact sheet marks
  * unconfirmed are named constants below tagged [U] and listed in docs/unconfirmed-facts.md.
  * docs/drivers-adis-imu.md describes the API, the protocol and the simulated part.
  *
- * Output words (sensors.md §3.3): bit 15 ND (new data since the register was last read), bit 14
+ * Output words (docs/sensor-facts.md §3.3): bit 15 ND (new data since the register was last read), bit 14
  * EA (an error or alarm flag is set in DIAG_STAT), data in bits 13..0 (14-bit) or 11..0 (12-bit).
  * The driver never hands out a value silently: EA -> INC_ERR_DEVICE with DIAG_STAT read and kept,
  * ND clear -> the channel is stale (INC_ERR_STALE), a reply that cannot come from a live part
@@ -62,7 +62,7 @@ enum adis_imu_family {
     ADIS_IMU_FAMILY_1640X = 1, /* magnetometer, TEMP_OUT at 0x16, AUX_ADC at 0x18, 12-word burst */
 };
 
-/* PROD_ID = the part number in decimal (sensors.md §3.5). */
+/* PROD_ID = the part number in decimal (docs/sensor-facts.md §3.5). */
 #define ADIS_IMU_PROD_ID_16360 0x3FE8u
 #define ADIS_IMU_PROD_ID_16362 0x3FEAu
 #define ADIS_IMU_PROD_ID_16364 0x3FECu
@@ -90,7 +90,7 @@ enum adis_imu_variant adis_imu_variant_from_prod_id(uint16_t id);
 const char *adis_imu_variant_name(enum adis_imu_variant v);
 
 /* ---------------------------------------------------------------------------------------------
- * Register map (sensors.md §3.2). Addresses are the even (low-byte) address of each 16-bit
+ * Register map (docs/sensor-facts.md §3.2). Addresses are the even (low-byte) address of each 16-bit
  * register; the high byte is at address + 1. ADIS_IMU_REG_* exist on both families,
  * ADIS1636X_REG_* / ADIS1640X_REG_* only on that family.
  * ------------------------------------------------------------------------------------------- */
@@ -170,7 +170,7 @@ const struct adis_imu_reg_desc *adis_imu_reg_map(enum adis_imu_family f, size_t 
 /* The entry of one address (even), or NULL when the family has no register there. */
 const struct adis_imu_reg_desc *adis_imu_reg_find(enum adis_imu_family f, uint8_t addr);
 
-/* MSC_CTRL bits (sensors.md §3.4). */
+/* MSC_CTRL bits (docs/sensor-facts.md §3.4). */
 #define ADIS_IMU_MSC_DR_LINE_DIO2 0x0001u /* 1 = DIO2, 0 = DIO1 */
 #define ADIS_IMU_MSC_DR_POL_HIGH 0x0002u  /* 1 = active high */
 #define ADIS_IMU_MSC_DR_EN 0x0004u
@@ -182,7 +182,7 @@ const struct adis_imu_reg_desc *adis_imu_reg_find(enum adis_imu_family f, uint8_
 #define ADIS_IMU_MSC_MEM_TEST 0x0800u
 #define ADIS_IMU_MSC_DEFAULT 0x0006u
 
-/* GLOB_CMD bits (sensors.md §3.4); enum adis_imu_cmd values are these bits. */
+/* GLOB_CMD bits (docs/sensor-facts.md §3.4); enum adis_imu_cmd values are these bits. */
 enum adis_imu_cmd {
     ADIS_IMU_CMD_AUTONULL = 0x01,
     ADIS_IMU_CMD_FACTORY_RESTORE = 0x02,
@@ -192,7 +192,7 @@ enum adis_imu_cmd {
     ADIS_IMU_CMD_SW_RESET = 0x80,
 };
 
-/* DIAG_STAT bits (sensors.md §3.4). Every bit except 7 is an error or alarm (EA). */
+/* DIAG_STAT bits (docs/sensor-facts.md §3.4). Every bit except 7 is an error or alarm (EA). */
 #define ADIS_IMU_DIAG_SUPPLY_LOW 0x0001u   /* supply < 4.75 V */
 #define ADIS_IMU_DIAG_SUPPLY_HIGH 0x0002u  /* supply > 5.25 V */
 #define ADIS_IMU_DIAG_FLASH_UPDATE 0x0004u /* flash update failed */
@@ -225,7 +225,7 @@ void adis_imu_diag_decode(uint16_t diag, struct adis_imu_diag *out);
 const char *adis_imu_diag_bit_name(unsigned bit);
 
 /* ---------------------------------------------------------------------------------------------
- * Timing (sensors.md §3.1, §3.4). Periods in ns, waits in ms. [U] = unconfirmed, safe side.
+ * Timing (docs/sensor-facts.md §3.1, §3.4). Periods in ns, waits in ms. [U] = unconfirmed, safe side.
  * ------------------------------------------------------------------------------------------- */
 #define ADIS_IMU_SCLK_PERIOD_NORMAL_NS 500u     /* <= 2 MHz while SMPL_PRD[7:0] <= 0x09 */
 #define ADIS_IMU_SCLK_PERIOD_LOW_POWER_NS 3334u /* <= 300 kHz otherwise: ceil(1e9 / 300 kHz) */
@@ -238,7 +238,7 @@ const char *adis_imu_diag_bit_name(unsigned bit);
 /* [U] tCS recollection ~48.8 ns; CS setup and hold are taken at 100 ns. */
 #define ADIS_IMU_CS_SETUP_NS 100u
 #define ADIS_IMU_CS_HOLD_NS 100u
-/* Burst words are separated by one SCLK period (sensors.md §3.1, B10-B12). */
+/* Burst words are separated by one SCLK period (docs/sensor-facts.md §3.1, B10-B12). */
 #define ADIS_IMU_BURST_GAP_NS ADIS_IMU_SCLK_PERIOD_BURST_NS
 /* SMPL_PRD[7:0] above this selects low-power mode (time-base bit 7 included). */
 #define ADIS_IMU_SMPL_PRD_NORMAL_MAX 0x09u
@@ -247,7 +247,7 @@ const char *adis_imu_diag_bit_name(unsigned bit);
 #define ADIS_IMU_AUTONULL_MS 50u              /* [U] ADI example's wait, no datasheet figure */
 #define ADIS_IMU_FACTORY_RESTORE_MS 50u       /* [U] ADI example's wait */
 #define ADIS_IMU_FLASH_UPDATE_MS 100u         /* [U] OPTEC's wait after the update */
-#define ADIS_IMU_PRECISION_AUTONULL_MS 30000u /* seed 003 and the ADI example: 30 s */
+#define ADIS_IMU_PRECISION_AUTONULL_MS 30000u /* [ADI-IMU-QS] and the ADI example: 30 s */
 #define ADIS_IMU_AUX_DAC_LATCH_MS 0u
 /* Power-on to first access: Linux STARTUP_DELAY 290 ms, the longest of 220/290 ms (ADIS16405)
  * and 180/250 ms (ADIS16367). The driver does not wait it (it cannot know when power came);
@@ -267,7 +267,7 @@ const char *adis_imu_diag_bit_name(unsigned bit);
 /*
  * Sample period in ns (rounded to nearest) for SMPL_PRD[7:0] = smpl_prd:
  * (NS + 1) x tB, tB = 1/1638.4 s = 610351.5625 ns, or 31 x that with bit 7 set (the Linux rate
- * constants 1638.404 and 52.851 SPS, sensors.md §3.4). 0x01 -> 1220703 ns (819.2 SPS).
+ * constants 1638.404 and 52.851 SPS, docs/sensor-facts.md §3.4). 0x01 -> 1220703 ns (819.2 SPS).
  */
 uint32_t adis_imu_sample_period_ns(uint8_t smpl_prd);
 /* Sample rate in milli-samples/s, rounded to nearest: 0x01 -> 819200, 0x09 -> 163840. */
@@ -317,8 +317,8 @@ int32_t adis_imu_aux_v_from_counts(int32_t counts);
 
 /*
  * User offsets. XGYRO_OFF: 13-bit two's complement [-4096, 4095] at 0.0125 deg/s (= 1/80 deg/s)
- * per LSB [U width: docs/gyro-calibration.md, "Offset register"; 13 is used]. The offset LSB is
- * taken as independent of the gyro range [U].
+ * per LSB [U width: [ADI-IMU-QS] says 14-bit; docs/sensor-facts.md and ADI's example 13; 13 is used]. The
+ * offset LSB is taken as independent of the gyro range [U].
  *
  * adis_imu_gyro_off_counts_from_dps: counts = round(dps x 80), ties away from zero, saturated
  * to [-4096, 4095]; *saturated (may be NULL) is set when the input was outside that range

@@ -4,14 +4,14 @@
  *
  * Units and formats
  *   - Acceleration counts: 13-bit two's complement, -4096..4095, one count = the variant's LSB:
- *     D01 750 ug, E02 1000 ug, E04 2000 ug, E05 6250 ug (sensors.md 1.1: the Linux scales
+ *     D01 750 ug, E02 1000 ug, E04 2000 ug, E05 6250 ug (docs/sensor-facts.md §1.1: the Linux scales
  *     7357/9810/19620/61313 um/s^2 are 0.75/1/2/6.25 mg x 9.81).
  *   - Ring-buffer values (11-bit mode) are returned in the same 13-bit count units (the 11-bit
  *     value x 4), so one conversion serves both.
  *   - Temperature (D01 only): 9-bit unsigned counts 0..511.
  *   - Conversions give Q16.16 g and Q16.16 degC (int32_t, value = q / 65536).
  *
- * Bus protocol (sensors.md 1.2). 8-bit frames, MSB first, SPI mode 3 (mode 0 accepted: the fact
+ * Bus protocol (docs/sensor-facts.md §1.2). 8-bit frames, MSB first, SPI mode 3 (mode 0 accepted: the fact
  * sheet leaves the mode unconfirmed, both shift on the falling and sample on the rising edge).
  * Command byte = address << 2, | 0x02 for a write. A write is [cmd][data] in one CS period; a
  * read is [cmd] followed by n data bytes in the same CS period, the address decrementing after
@@ -64,7 +64,7 @@ enum sca3000_variant {
                           sca3000_init() rejects it with INC_ERR_UNSUPPORTED */
 };
 
-/* ---- direct registers (sensors.md 1.3) ------------------------------------------------------ */
+/* ---- direct registers (docs/sensor-facts.md §1.3) ------------------------------------------------------ */
 
 #define SCA3000_REG_REVID 0x00u
 #define SCA3000_REG_STATUS 0x02u
@@ -106,7 +106,7 @@ enum sca3000_variant {
 #define SCA3000_INT_MASK_PROTECT 0x1Cu
 #define SCA3000_INT_MASK_ACTIVE_HIGH 0x01u
 
-/* ---- indirect registers (CTRL_SEL values, sensors.md 1.5) ----------------------------------- */
+/* ---- indirect registers (CTRL_SEL values, docs/sensor-facts.md §1.5) ----------------------------------- */
 
 #define SCA3000_IND_I2C_DISABLE 0x01u /* D01 only */
 #define SCA3000_IND_MD_CTRL 0x02u
@@ -121,10 +121,10 @@ enum sca3000_variant {
 #define SCA3000_OUT_CTRL_Y 0x08u
 #define SCA3000_OUT_CTRL_Z 0x04u
 
-/* ---- SPI timing (all [U] in sensors.md; safe values, see docs/unconfirmed-facts.md) --------- */
+/* ---- SPI timing (all [U] in docs/sensor-facts.md; safe values, see docs/unconfirmed-facts.md) --------- */
 
 /* SCLK period: 2000 ns = 500 kHz. No readable source gives the maximum; the only field value is
- * an ATmega driver at 4 MHz (sensors.md S9). 8x slower than that. */
+ * an ATmega driver at 4 MHz (docs/sensor-facts.md S9). 8x slower than that. */
 #define SCA3000_SCLK_PERIOD_NS 2000u
 /* CS falling edge -> first SCLK edge, and last SCLK edge -> CS rising edge. */
 #define SCA3000_CS_SETUP_NS 1000u
@@ -230,8 +230,7 @@ int sca3000_read_diag(struct sca3000 *dev, uint8_t *status);
  * for option 2 on the D01 and E02. */
 int sca3000_set_mode(struct sca3000 *dev, enum sca3000_mode mode);
 enum sca3000_mode sca3000_get_mode(const struct sca3000 *dev);
-/* Output data rate of the current mode in mHz (docs/drivers-sca3000.md, "Modes"; 0 in motion
- * detection). */
+/* Output data rate of the current mode in mHz (docs/sensor-facts.md §1.6; 0 in motion detection). */
 uint32_t sca3000_odr_mhz(const struct sca3000 *dev);
 /* The output period of the current mode in ns, rounded up (never shorter than the part's):
  * ceil(1e12 / sca3000_odr_mhz); 0 in motion detection or before init. */
@@ -334,7 +333,7 @@ int sca3000_accel_g_from_counts(int32_t counts, enum sca3000_variant v, int32_t 
  * T = (raw - 214.6) / 1.8 = (10 raw - 2146) / 18, rounded to the nearest Q16.16 step, ties away
  * from zero; range -119.22..+164.67 degC, max error 0.5 LSB of Q16.16 (7.63e-6 degC).
  * The formula is the Linux driver's (offset -214.6 LSB, 0.555556 degC/LSB); the datasheet
- * value is UNCONFIRMED (sensors.md 1.4, docs/unconfirmed-facts.md).
+ * value is UNCONFIRMED (docs/sensor-facts.md §1.4, docs/unconfirmed-facts.md).
  */
 int sca3000_temp_c_from_counts(int32_t raw9, int32_t *c_q16);
 

@@ -7,7 +7,7 @@
  *   the temperature models evaluated at the sample's temperature, cal_gyro_apply) -> stillness
  *   detection (inclino/still.h) -> block average of avg_n samples;
  * and per block: the slope estimate (inclino/slope.h) in degrees and percent grade with its
- * validity flag and the error bound of seed 000's budget, composed from
+ * validity flag and the error bound of [ADI-EPB]'s budget, composed from
  *   - the calibration residuals of the part type (struct app_budget, set by the integrator from
  *     the end-of-line process; docs/epb-demo.md shows how the demo derives them),
  *   - the temperature term that applies: compensated only when the record has a temperature
@@ -56,9 +56,9 @@ extern "C" {
 #endif
 
 /*
- * Error budget of the part type (seed 000 Table 1), per axis, worst case, Q16 g unless noted.
+ * Error budget of the part type ([ADI-EPB] Table 1), per axis, worst case, Q16 g unless noted.
  * Every term >= 0. The "after calibration" terms apply when the record is valid; the "_uncal"
- * terms (seed 000 "before") replace sensitivity and offset when it is not.
+ * terms ([ADI-EPB] "before") replace sensitivity and offset when it is not.
  */
 struct app_budget {
     fx_q30_t sensitivity;       /* relative gain residual after calibration (Q30, < 0.5) */
@@ -161,9 +161,9 @@ struct app {
  *   blocks of avg_n = 8 W samples (2.5 s);
  *   two-axis slope (x along the vehicle, nose up = +x; z up), |slope| <= 30 deg, bound <= 2 deg,
  *   magnitude 1 g +- 50 mg;
- *   seed 000's Table 1 as the budget: after calibration sensitivity 0, offset 0, nonlinearity
+ *   [ADI-EPB]'s Table 1 as the budget: after calibration sensitivity 0, offset 0, nonlinearity
  *   10 mg, temperature 10 mg (three-point) or 50 mg (none), scale drift 0.5 %; before it 3 % and
- *   15 mg; noise 4 mg per sample (seed 000: 0.4 mg after averaging 100); k from M = 200 000
+ *   15 mg; noise 4 mg per sample ([ADI-EPB]: 0.4 mg after averaging 100); k from M = 200 000
  *   parkings and E = 0.001 (k = 5.9);
  *   temperature 25 degC when the part has none, models re-evaluated every 0.5 degC, a margin of
  *   1 degC around the calibrated temperature range, no read error tolerated in a block.

@@ -1,22 +1,22 @@
 /*
  * gyrocal.h - gyro bias calibration of the ADIS1636x/1640x (module inclino_gyrocal, prefix
  * gyrocal_), on top of the driver (inclino/adis_imu.h). Freestanding C11, integer only,
- * caller-allocated state. The three options of seed 003 ("optimising bias accuracy"):
+ * caller-allocated state. The three options of [ADI-IMU-QS] ("optimising bias accuracy"):
  *
  *   AUTONULL   SMPL_PRD = 0x01, SENS_AVG M = 6 (64 taps per stage; range kept), 200 ms for the
  *              taps to fill, GLOB_CMD[0]: the part writes minus its output into XGYRO_OFF..
- *              Equivalent averaging time about 0.15 s; seed 003: about 0.08 deg/s.
+ *              Equivalent averaging time about 0.15 s; [ADI-IMU-QS]: about 0.08 deg/s.
  *   PRECISION  GLOB_CMD[4]: the part averages 30 s at its own settings and writes the offsets.
- *              Seed 003: about 0.008 deg/s.
+ *              [ADI-IMU-QS]: about 0.008 deg/s.
  *   MANUAL     SMPL_PRD = 0x01; wait for thermal settling (TEMP_OUT); average manual_samples
  *              (seed: 82 000, about 100 s at 819.2 SPS) of each gyro; offset = old - round(80 x
- *              mean deg/s), 13-bit two's complement (sensors.md 3.4; seed 003 says 14-bit, see
+ *              mean deg/s), 13-bit two's complement (docs/sensor-facts.md §3.4; [ADI-IMU-QS] says 14-bit, see
  *              docs/gyro-calibration.md), saturating; write; GLOB_CMD[3] flash update (bit 3 =
- *              DIN 0xBE08; seed 003 prints 0xBE04, which is bit 2, the AUX DAC latch).
- *              Also a processor-side correction at 1/320 deg/s (seed 003: the x320 variant for
+ *              DIN 0xBE08; [ADI-IMU-QS] prints 0xBE04, which is bit 2, the AUX DAC latch).
+ *              Also a processor-side correction at 1/320 deg/s ([ADI-IMU-QS]: the x320 variant for
  *              a 16-bit correction added to the output in the processor): the full correction
  *              (manual_to_register false: registers untouched) or the remainder the 0.0125 deg/s
- *              register cannot take (true). Seed 003: about 0.006 deg/s.
+ *              register cannot take (true). [ADI-IMU-QS]: about 0.006 deg/s.
  *
  * Gating: every mode REFUSES to start (nothing written) unless the stillness detector says
  * AT_REST and the thermal detector says SETTLED (MANUAL first waits up to settle_timeout_ms for
@@ -27,7 +27,7 @@
  * flagged and the call returns INC_ERR_RANGE.
  *
  * Residual estimate (1 sigma, per axis, deg/s Q16.16): sqrt(a^2 + q^2/12), with a the part's
- * Allan deviation at the mode's averaging time (cfg.adev_q16, seed 003's figures by default) -
+ * Allan deviation at the mode's averaging time (cfg.adev_q16, [ADI-IMU-QS]'s figures by default) -
  * for MANUAL the larger of that and the measured standard error of the mean - and q the
  * resolution of the correction (0.0125 deg/s register, 1/320 deg/s processor-side).
  *
@@ -77,13 +77,13 @@ enum gyrocal_reason {
 /* "done", "refused: moving", ... (never NULL). */
 const char *gyrocal_reason_text(enum gyrocal_reason r);
 
-/* Seed 003's bias accuracies, deg/s Q16.16: autonull 0.08, precision 0.008, manual 0.006. */
+/* [ADI-IMU-QS]'s bias accuracies, deg/s Q16.16: autonull 0.08, precision 0.008, manual 0.006. */
 #define GYROCAL_ADEV_AUTONULL_Q16 5243 /* 0.08 * 65536 = 5242.9 */
 #define GYROCAL_ADEV_PRECISION_Q16 524 /* 0.008 */
 #define GYROCAL_ADEV_MANUAL_Q16 393    /* 0.006 */
-#define GYROCAL_MANUAL_SAMPLES 82000u  /* seed 003: about 100 s at 819.2 SPS */
+#define GYROCAL_MANUAL_SAMPLES 82000u  /* [ADI-IMU-QS]: about 100 s at 819.2 SPS */
 #define GYROCAL_AUTONULL_M 6u          /* SENS_AVG = 0x06 */
-#define GYROCAL_AUTONULL_FILL_MS 200u  /* seed 003: 200 ms for the taps to fill */
+#define GYROCAL_AUTONULL_FILL_MS 200u  /* [ADI-IMU-QS]: 200 ms for the taps to fill */
 #define GYROCAL_PROC_PER_DPS 320       /* processor-side correction units per deg/s */
 
 struct gyrocal_cfg {
@@ -92,21 +92,21 @@ struct gyrocal_cfg {
     uint32_t settle_timeout_ms;       /* MANUAL: longest wait for settling; 0 = refuse at once */
     uint32_t manual_samples;          /* MANUAL: samples averaged, 2..2^24 */
     bool manual_to_register;          /* MANUAL: write XGYRO_OFF.. (else processor-side only) */
-    bool flash_update;                /* MANUAL: GLOB_CMD[3] after writing (seed 003 step 8) */
+    bool flash_update;                /* MANUAL: GLOB_CMD[3] after writing ([ADI-IMU-QS] step 8) */
     int32_t adev_q16[GYROCAL_MODES];  /* Allan deviation at each mode's averaging time, > 0 */
     uint32_t verify_samples;          /* samples of the verification (0 = none), <= 2^24 */
     uint32_t verify_sigmas;           /* verification limit in sigmas, 1..100 */
 };
 
 /*
- * Defaults for a variant and gyro range, from seed 003 and the fact sheet:
+ * Defaults for a variant and gyro range, from [ADI-IMU-QS] and the fact sheet:
  *  still: 1 s windows (819 samples at 819.2 SPS), 2 in a row; gyro variance for "less than
- *   1 deg/s rms unfiltered" (seed 003) plus the 6-sigma margin of a 819-sample estimate; accel
+ *   1 deg/s rms unfiltered" ([ADI-IMU-QS]) plus the 6-sigma margin of a 819-sample estimate; accel
  *   variance for 10 mg rms [U: no accelerometer noise figure in the seeds]; |gyro mean| <= 5 deg/s
  *   [U: above any uncalibrated bias]; | |a| - 1 g | <= 100 mg; accel drift <= 3 mg per window;
  *  thermal: 1 s points (819 samples), 30 s window, at most 1 TEMP_OUT LSB of change;
- *  manual: 82 000 samples, to the register, flash update, 15 min settling timeout (seed 003: up
- *   to 10 to 15 minutes); adev: seed 003's figures; verification 1638 samples (2 s), 6 sigma.
+ *  manual: 82 000 samples, to the register, flash update, 15 min settling timeout ([ADI-IMU-QS]: up
+ *   to 10 to 15 minutes); adev: [ADI-IMU-QS]'s figures; verification 1638 samples (2 s), 6 sigma.
  * INC_ERR_NULL / INC_ERR_INVAL (no variant info, unknown range).
  */
 int gyrocal_default_cfg(struct gyrocal_cfg *cfg, const struct adis_imu_variant_info *vi,

@@ -101,7 +101,7 @@ void epb_rig_vehicle_default(struct epb_rig_vehicle *v);
 struct epb_rig;
 
 /*
- * Set up board, part model (errors: NULL = sim_calpart_paper(), seed 000/002's part "A"),
+ * Set up board, part model (errors: NULL = sim_calpart_paper(), [ADI-EPB]/[TEMP-LORENTZ]'s part "A"),
  * flash (erased) and the station physics (face ZP, 25 degC). The part is powered and past its
  * start-up time. 0 or an error of the parts.
  */
