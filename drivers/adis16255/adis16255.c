@@ -8,6 +8,7 @@
  */
 #include "inclino/adis16255.h"
 
+#include "adis16255_regs.h"
 #include "inclino/adis.h"
 
 #define NS_PER_MS 1000000ull

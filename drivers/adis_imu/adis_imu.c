@@ -8,6 +8,8 @@
  */
 #include "inclino/adis_imu.h"
 
+#include "adis_imu_regs.h"
+
 #define NS_PER_MS 1000000ull
 
 /* The part's channel -> register address, per family (0 = the family has no such channel;

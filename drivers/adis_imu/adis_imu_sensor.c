@@ -8,6 +8,7 @@
  */
 #include <stddef.h>
 
+#include "adis_imu_regs.h"
 #include "inclino/adis_imu.h"
 #include "inclino/fx.h"
 

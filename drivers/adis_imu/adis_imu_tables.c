@@ -7,6 +7,8 @@
  */
 #include "inclino/adis_imu.h"
 
+#include "adis_imu_regs.h"
+
 #include "inclino/fx.h"
 
 /*

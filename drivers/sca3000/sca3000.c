@@ -6,6 +6,8 @@
  */
 #include "inclino/sca3000.h"
 
+#include "sca3000_regs.h"
+
 /* Output data rate in mHz per variant and MODE[1:0] (docs/sensor-facts.md §1.6, Linux chip table). */
 static const uint32_t odr_table[4][3] = {
     {250000u, 250000u, 0u},     /* D01: normal, bypass */

@@ -15,6 +15,8 @@
  */
 #include "fixture.h"
 
+#include "adis16255_regs.h" /* white-box: the driver's register map */
+
 #include "inclino/adis.h"
 
 struct span {

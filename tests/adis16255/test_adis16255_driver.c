@@ -9,6 +9,8 @@
  */
 #include "fixture.h"
 
+#include "adis16255_regs.h" /* white-box: the driver's register map */
+
 #include "inclino/adis.h"
 
 #include <math.h>

@@ -9,6 +9,7 @@
  * QEMU it runs 2 s.
  */
 #include "fixture.h"
+#include "adis_imu_regs.h" /* white-box: the driver's register map */
 #include "unit.h"
 
 #include <math.h>

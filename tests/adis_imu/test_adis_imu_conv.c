@@ -7,6 +7,7 @@
  * 2 |q x den - num| <= den, and on a tie the magnitude rounds up - plus exact vectors.
  */
 #include "inclino/adis_imu.h"
+#include "adis_imu_regs.h" /* white-box: the driver's register map */
 #include "unit.h"
 
 #include <string.h>

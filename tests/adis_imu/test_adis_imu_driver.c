@@ -6,6 +6,7 @@
  * the datasheet scales (docs/sensor-facts.md §3.3), not taken from the model.
  */
 #include "fixture.h"
+#include "adis_imu_regs.h" /* white-box: the driver's register map */
 #include "unit.h"
 
 #include <stdio.h>

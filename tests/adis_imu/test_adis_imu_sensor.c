@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "fixture.h"
+#include "adis_imu_regs.h" /* white-box: the driver's register map */
 #include "inclino/sensor.h"
 #include "unit.h"
 

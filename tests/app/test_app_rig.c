@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "inclino/sim/epb_rig_state.h"
+#include "adis_imu_regs.h" /* white-box: the driver's register map */
 #include "unit.h"
 
 static struct epb_rig rig;

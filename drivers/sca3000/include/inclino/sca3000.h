@@ -64,38 +64,14 @@ enum sca3000_variant {
                           sca3000_init() rejects it with INC_ERR_UNSUPPORTED */
 };
 
-/* ---- direct registers (docs/sensor-facts.md §1.3) ------------------------------------------------------ */
-
-#define SCA3000_REG_REVID 0x00u
-#define SCA3000_REG_STATUS 0x02u
-#define SCA3000_REG_X_LSB 0x04u
-#define SCA3000_REG_X_MSB 0x05u
-#define SCA3000_REG_Y_LSB 0x06u
-#define SCA3000_REG_Y_MSB 0x07u
-#define SCA3000_REG_Z_LSB 0x08u
-#define SCA3000_REG_Z_MSB 0x09u
-#define SCA3000_REG_BUF_DATA 0x0Fu
-#define SCA3000_REG_TEMP_LSB 0x12u
-#define SCA3000_REG_TEMP_MSB 0x13u
-#define SCA3000_REG_MODE 0x14u
-#define SCA3000_REG_BUF_COUNT 0x15u
-#define SCA3000_REG_INT_STATUS 0x16u
-#define SCA3000_REG_CTRL_SEL 0x18u
-#define SCA3000_REG_UNLOCK 0x1Eu
-#define SCA3000_REG_INT_MASK 0x21u
-#define SCA3000_REG_CTRL_DATA 0x22u
-
-#define SCA3000_CMD_WRITE 0x02u
+/* ---- registers: the addresses, MODE bits and protected-bit masks are private to the driver
+ * (drivers/sca3000/sca3000_regs.h; the white-box tests of tests/sca3000 include it). What a
+ * caller passes or gets back is here: STATUS and INT_STATUS bits, indirect register selectors,
+ * ring axes. ----------------------------------------------------------------------------------- */
 
 #define SCA3000_STATUS_UNLOCKED 0x20u /* bit5: 1 = indirect registers unlocked (Linux reading) */
 #define SCA3000_STATUS_EEPROM 0x02u   /* bit1: EEPROM checksum error */
 #define SCA3000_STATUS_FRAME 0x01u    /* bit0: the part saw a corrupt SPI frame */
-
-#define SCA3000_MODE_BUF_EN 0x80u
-#define SCA3000_MODE_BUF_8BIT 0x40u
-#define SCA3000_MODE_FFD_EN 0x10u
-#define SCA3000_MODE_PROTECT 0x28u /* reserved: kept as read */
-#define SCA3000_MODE_MEAS_MASK 0x03u
 
 #define SCA3000_INT_RING_3_4 0x80u /* INT_STATUS / INT_MASK: ring 3/4 full */
 #define SCA3000_INT_RING_1_2 0x40u /* ring 1/2 full */
@@ -103,8 +79,6 @@ enum sca3000_variant {
 #define SCA3000_INT_MOTION_Y 0x04u
 #define SCA3000_INT_MOTION_X 0x02u
 #define SCA3000_INT_MOTION_Z 0x01u
-#define SCA3000_INT_MASK_PROTECT 0x1Cu
-#define SCA3000_INT_MASK_ACTIVE_HIGH 0x01u
 
 /* ---- indirect registers (CTRL_SEL values, docs/sensor-facts.md §1.5) ----------------------------------- */
 
@@ -115,11 +89,10 @@ enum sca3000_variant {
 #define SCA3000_IND_MD_Z_TH 0x05u
 #define SCA3000_IND_OUT_CTRL 0x0Bu
 
-#define SCA3000_MD_CTRL_PROTECT 0xC0u
-#define SCA3000_OUT_CTRL_PROTECT 0xE0u /* must stay set ("the device will not function") */
 #define SCA3000_OUT_CTRL_X 0x10u
 #define SCA3000_OUT_CTRL_Y 0x08u
 #define SCA3000_OUT_CTRL_Z 0x04u
+
 
 /* ---- SPI timing (all [U] in docs/sensor-facts.md; safe values, see docs/unconfirmed-facts.md) --------- */
 
