@@ -221,9 +221,7 @@ int sca3000_init(struct sca3000 *dev, const struct sca3000_cfg *cfg)
     if (cfg->variant == SCA3000_E01) {
         return INC_ERR_UNSUPPORTED; /* no source describes the E01 (docs/sensor-facts.md §1.1) */
     }
-    if ((unsigned)cfg->variant > (unsigned)SCA3000_E05 || cfg->spi.bits != 8u ||
-        (cfg->spi.mode != SPI_MODE_3 && cfg->spi.mode != SPI_MODE_0) ||
-        cfg->expected_revid == 0xFFu) {
+    if ((unsigned)cfg->variant > (unsigned)SCA3000_E05 || cfg->expected_revid == 0xFFu) {
         return INC_ERR_INVAL;
     }
     if (cfg->int_pin != HAL_PIN_NONE) {
@@ -240,7 +238,16 @@ int sca3000_init(struct sca3000 *dev, const struct sca3000_cfg *cfg)
                                                     : (uint8_t)SCA3000_REVID_DEFAULT;
     dev->hal = cfg->hal;
     dev->int_pin = cfg->int_pin;
-    err = spi_dev_init(&dev->spi, cfg->bus, &cfg->spi);
+    {
+        /* The SPI settings are the part's: built here, as the ADIS drivers build theirs. */
+        static const struct spi_timing timing = SCA3000_SPI_TIMING_INIT;
+        struct spi_dev_cfg dc;
+        dc.cs = cfg->cs;
+        dc.mode = cfg->spi_mode0 ? SPI_MODE_0 : SPI_MODE_3;
+        dc.bits = 8u;
+        dc.timing = timing;
+        err = spi_dev_init(&dev->spi, cfg->bus, &dc);
+    }
     if (err != INC_OK) {
         return err;
     }

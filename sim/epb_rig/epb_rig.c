@@ -313,13 +313,9 @@ int epb_rig_power_up(struct epb_rig *r, const struct app_cfg *cfg)
         r->sensor.dev = &r->imu;
     } else {
         struct sca3000_cfg c;
-        static const struct spi_timing t = SCA3000_SPI_TIMING_INIT;
         memset(&c, 0, sizeof(c));
         c.bus = &r->board.spi.bus;
-        c.spi.cs = SIM_BOARD_CS(0);
-        c.spi.mode = SPI_MODE_3;
-        c.spi.bits = 8;
-        c.spi.timing = t;
+        c.cs = SIM_BOARD_CS(0);
         c.variant = (enum sca3000_variant)r->info->sim_variant; /* same order */
         c.hal = &r->board.hal;
         c.int_pin = HAL_PIN_NONE;

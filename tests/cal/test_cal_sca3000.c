@@ -31,7 +31,6 @@ static struct sca3000 dev;
 
 static int setup(void)
 {
-    static const struct spi_timing safe = SCA3000_SPI_TIMING_INIT;
     struct sim_sca3000_cfg pc;
     struct sca3000_cfg cfg;
     struct sim_calpart_params p;
@@ -59,10 +58,7 @@ static int setup(void)
     sim_sca3000_set_error_model(&part, &em);
     memset(&cfg, 0, sizeof cfg);
     cfg.bus = &board.spi.bus;
-    cfg.spi.cs = SIM_BOARD_CS(0);
-    cfg.spi.mode = SPI_MODE_3;
-    cfg.spi.bits = 8;
-    cfg.spi.timing = safe;
+    cfg.cs = SIM_BOARD_CS(0);
     cfg.variant = SCA3000_D01;
     cfg.hal = &board.hal;
     cfg.int_pin = SIM_BOARD_DR(0);

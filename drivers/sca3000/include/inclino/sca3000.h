@@ -105,7 +105,7 @@ enum sca3000_variant {
 /* CS high between two CS periods (the unlock sequence needs three separate periods). */
 #define SCA3000_STALL_NS 10000u
 
-/* The spi_timing initializer with the values above (gap between bytes of one period: none). */
+/* The spi_timing the driver uses, with the values above (gap between bytes of one period: none). */
 #define SCA3000_SPI_TIMING_INIT                                                               \
     {                                                                                         \
         SCA3000_SCLK_PERIOD_NS, SCA3000_CS_SETUP_NS, SCA3000_CS_HOLD_NS, SCA3000_STALL_NS, 0u \
@@ -132,8 +132,10 @@ enum sca3000_mode {
 
 struct sca3000_cfg {
     const struct spi_bus *bus;
-    struct spi_dev_cfg spi; /* cs; mode SPI_MODE_3 (0 accepted); bits 8;
-                                  timing SCA3000_SPI_TIMING_INIT */
+    hal_pin_t cs;   /* chip select (active low) */
+    bool spi_mode0; /* false: SPI mode 3; true: mode 0, which the part takes too. The
+                               driver builds the rest of its spi_dev_cfg itself (8-bit frames,
+                               SCA3000_SPI_TIMING_INIT), as the ADIS drivers do */
     enum sca3000_variant variant;
     uint8_t expected_revid; /* 0: SCA3000_REVID_DEFAULT; 0xFF is not allowed */
     const struct hal *hal;  /* for the INT line; may be NULL when int_pin is HAL_PIN_NONE */
