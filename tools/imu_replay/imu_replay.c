@@ -143,30 +143,48 @@ static int cmp_double(const void *a, const void *b)
 static uint8_t flash_mem[2u * PAGE];
 static struct simflash flash;
 
-/* ---- The replay sensor: a struct sensor whose identity is the chosen part's; samples come
- * through app_step (wait_ready and read are not used) ---------------------------------------- */
+/* ---- The replay sensor: a struct sensor whose samples are the recorded rows, quantised as the
+ * chosen part would deliver them, and whose identity is that part's ----------------------------- */
 
-struct replay_id {
+struct replay {
     struct sensor_identity id;
+    const struct part *part;
+    const struct imu_csv_table *t;
+    double nominal, gap_factor; /* s; a step longer than gap_factor x nominal is a gap */
+    size_t next;                /* the row the next read delivers */
 };
 
 static int replay_wait(void *dev, uint32_t timeout_ns)
 {
-    (void)dev;
+    const struct replay *rp = dev;
     (void)timeout_ns;
-    return INC_ERR_UNSUPPORTED; /* rows are fed with app_step */
+    return rp->next < rp->t->n ? INC_OK : INC_ERR_TIMEOUT; /* a recording has no pacing */
 }
 
 static int replay_read(void *dev, struct sensor_sample *out)
 {
-    (void)dev;
-    (void)out;
-    return INC_ERR_UNSUPPORTED; /* rows are fed with app_step */
+    struct replay *rp = dev;
+    const struct imu_csv_row *r;
+    double dt;
+    if (rp->next >= rp->t->n) {
+        return INC_ERR_TIMEOUT; /* the recording is over */
+    }
+    r = &rp->t->rows[rp->next];
+    dt = rp->next == 0u ? rp->nominal : r->v[0] - rp->t->rows[rp->next - 1u].v[0];
+    quantise_row(rp->part, r->v, rp->t->cols == 8, out);
+    out->missed = 0u;
+    if (dt > rp->gap_factor * rp->nominal) {
+        out->missed = (uint32_t)fmin(floor(dt / rp->nominal + 0.5) - 1.0, 4e9);
+        if (out->missed == 0u) out->missed = 1u;
+    }
+    out->t_ns = (uint64_t)(r->v[0] * 1e9 + 0.5);
+    rp->next++;
+    return INC_OK;
 }
 
 static int replay_identity(void *dev, struct sensor_identity *out)
 {
-    *out = ((const struct replay_id *)dev)->id;
+    *out = ((const struct replay *)dev)->id;
     return INC_OK;
 }
 
@@ -320,7 +338,7 @@ int main(int argc, char **argv)
     struct imu_csv_table t = {NULL, 0, 0, 0};
     struct app_cfg cfg;
     struct tilt_config tc;
-    struct replay_id rid;
+    struct replay rid;
     struct sensor sensor = {&replay_ops, &rid};
     struct app_result last;
     char msg[512] = "";
@@ -368,6 +386,10 @@ int main(int argc, char **argv)
 
     /* Identity of the replayed part (struct sensor_identity, as the driver reports it). */
     memset(&rid, 0, sizeof rid);
+    rid.part = o.part;
+    rid.t = &t;
+    rid.nominal = nominal;
+    rid.gap_factor = o.gap_factor;
     if (o.part->adis) {
         rid.id.family = SENSOR_FAMILY_ADIS163XX;
         rid.id.product = adis_imu_variant_info((enum adis_imu_variant)o.part->variant)->prod_id;
@@ -477,15 +499,17 @@ int main(int argc, char **argv)
         uint32_t gap = 0;
         bool done = false;
         unsigned k;
-        quantise_row(o.part, r->v, t.cols == 8, &s);
-        if (dt > o.gap_factor * nominal) {
-            gap = (uint32_t)fmin(floor(dt / nominal + 0.5) - 1.0, 4e9);
-            if (gap == 0u) gap = 1u;
+        err = sensor_next(&sensor, 0u, &s); /* row i, as the part would deliver it */
+        if (err != INC_OK) {
+            fprintf(stderr, "imu_replay: line %ld: the replay sensor failed (%s)\n", r->line,
+                    inc_err_name(err));
+            break;
+        }
+        gap = s.missed;
+        if (gap != 0u) {
             gaps++;
             missed_total += gap;
         }
-        s.missed = gap;
-        s.t_ns = (uint64_t)(r->v[0] * 1e9 + 0.5);
         err = app_step(&app, &s, INC_OK, &c, &done, &res);
         if (err != INC_OK) {
             fprintf(stderr, "imu_replay: line %ld: app_step failed (%s)\n", r->line,
