@@ -538,7 +538,9 @@ int adis_imu_read_identity(struct adis_imu *dev, struct sensor_identity *out);
  *               Accel (variant LSB), gyro (range in force) and temperature: TEMP_OUT on the
  *               1640x, the mean of the three gyro temperatures on the 1636x (rounded, ties away
  *               from zero). Saturation per axis: a count at -8192 or 8191 (14-bit ends).
- *   read_diag   DIAG_STAT mapped to SENSOR_D_*, raw = DIAG_STAT, supply_v = SUPPLY_OUT.
+ *   read_diag   DIAG_STAT mapped to SENSOR_D_*, raw = DIAG_STAT, supply_v = SUPPLY_OUT (that
+ *               read clears SUPPLY_OUT's ND: a burst in the same sample period is then stale,
+ *               and sensor_next takes the next sample).
  *   self_test   adis_imu_self_test; INC_ERR_DEVICE with the failing bits in out.
  *   identity    adis_imu_read_identity.
  *   info        accel full scale 8192 x LSB, gyro full scale 300/150/75 deg/s (range in force),
