@@ -15,63 +15,74 @@ struct script {
     unsigned waits, reads;
     uint32_t last_timeout;
     const void *last_cfg;
-    int other_err; /* result of read_diag, self_test, identity, info, init */
+    int other_err;  /* result of read_diag, self_test, identity, info, init */
+    unsigned other; /* calls of read_diag, self_test, identity, info */
 };
 
 static struct script sc;
 
+/* Every op keeps its state through dev (the wrappers must pass it through unchanged). */
 static int s_init(void *dev, const void *cfg)
 {
-    CHECK(dev == &sc);
-    sc.last_cfg = cfg;
-    return sc.other_err;
+    struct script *p = dev;
+    CHECK(p == &sc);
+    p->last_cfg = cfg;
+    return p->other_err;
 }
 
 static int s_wait(void *dev, uint32_t timeout_ns)
 {
-    CHECK(dev == &sc);
-    sc.last_timeout = timeout_ns;
-    return sc.waits < 4u ? sc.wait_err[sc.waits++] : (sc.waits++, INC_OK);
+    struct script *p = dev;
+    CHECK(p == &sc);
+    p->last_timeout = timeout_ns;
+    return p->waits < 4u ? p->wait_err[p->waits++] : (p->waits++, INC_OK);
 }
 
 static int s_read(void *dev, struct sensor_sample *out)
 {
-    const int err = sc.reads < 4u ? sc.read_err[sc.reads] : INC_OK;
-    CHECK(dev == &sc);
-    sc.reads++;
+    struct script *p = dev;
+    const int err = p->reads < 4u ? p->read_err[p->reads] : INC_OK;
+    CHECK(p == &sc);
+    p->reads++;
     /* a driver that writes something before failing: the wrapper must clear it */
-    out->accel_g[0] = (int32_t)(1000u + sc.reads);
+    out->accel_g[0] = (int32_t)(1000u + p->reads);
     out->flags = SENSOR_S_HAVE_ACCEL;
-    out->missed = sc.reads;
+    out->missed = p->reads;
     out->t_ns = 42u;
     return err;
 }
 
 static int s_diag(void *dev, struct sensor_diag *out)
 {
-    CHECK(dev == &sc);
+    struct script *p = dev;
+    CHECK(p == &sc);
+    p->other++;
     out->flags = SENSOR_D_ALARM;
     out->raw = 0x0100u;
     out->supply_v = 5;
-    return sc.other_err;
+    return p->other_err;
 }
 
 static int s_identity(void *dev, struct sensor_identity *out)
 {
-    CHECK(dev == &sc);
+    struct script *p = dev;
+    CHECK(p == &sc);
+    p->other++;
     memset(out, 0, sizeof *out);
     out->family = SENSOR_FAMILY_SCA3000;
     out->product = 0x0D01u;
-    return sc.other_err;
+    return p->other_err;
 }
 
 static int s_info(void *dev, struct sensor_info *out)
 {
-    CHECK(dev == &sc);
+    struct script *p = dev;
+    CHECK(p == &sc);
+    p->other++;
     out->accel_fs_g = FX_Q16_INT(3);
     out->gyro_fs_dps = 0;
     out->rate_mhz = 250000u;
-    return sc.other_err;
+    return p->other_err;
 }
 
 static const struct sensor_ops full = {s_init, s_wait, s_read, s_diag, s_diag, s_identity, s_info};
@@ -128,6 +139,7 @@ static void test_null_handling(void)
     CHECK_ERR(sensor_get_info(&ok, NULL), INC_ERR_NULL);
     CHECK_EQ_INT(sc.reads, 0);
     CHECK_EQ_INT(sc.waits, 0); /* sensor_next checks its output before it waits */
+    CHECK_EQ_INT(sc.other, 0);
 }
 
 static void test_pass_through(void)
@@ -153,6 +165,7 @@ static void test_pass_through(void)
     CHECK_EQ_INT(id.family, SENSOR_FAMILY_SCA3000);
     CHECK_OK(sensor_get_info(&ok, &info));
     CHECK_EQ_INT(info.rate_mhz, 250000);
+    CHECK_EQ_INT(sc.other, 4);
     sc.other_err = INC_ERR_BUS;
     CHECK_ERR(sensor_init(&ok, &cfg), INC_ERR_BUS);
     CHECK_ERR(sensor_read_diag(&ok, &d), INC_ERR_BUS);
