@@ -17,7 +17,6 @@
 
 #include "inclino/adis_imu.h"
 #include "inclino/app.h"
-#include "inclino/app_adis.h"
 #include "inclino/calstore.h"
 #include "inclino/spi_bitbang.h"
 
@@ -86,8 +85,7 @@ volatile uint32_t epb_output_count;
 
 static struct spi_bitbang spi;
 static struct adis_imu imu;
-static struct app_adis adapter;
-static struct app_sensor sensor;
+static struct sensor sensor = {&adis_imu_sensor_ops, &imu};
 static struct calstore store;
 static struct app app;
 static struct app_face faces[CAL_FACES];
@@ -116,9 +114,6 @@ static int sensor_up(const struct hal *hal)
     err = adis_imu_init(&imu, &ic);
     if (err == INC_OK) {
         err = adis_imu_set_filter(&imu, 0u, ADIS_IMU_RANGE_300);
-    }
-    if (err == INC_OK) {
-        err = app_adis_sensor(&adapter, &imu, &sensor);
     }
     return err;
 }

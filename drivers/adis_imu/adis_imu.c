@@ -8,6 +8,8 @@
  */
 #include "inclino/adis_imu.h"
 
+#include "adis_imu_regs.h"
+
 #define NS_PER_MS 1000000ull
 
 /* The part's channel -> register address, per family (0 = the family has no such channel;
@@ -36,60 +38,60 @@ static void timing_for(bool low_power, bool burst, struct spi_timing *t)
     t->gap_ns = burst ? (period > ADIS_IMU_BURST_GAP_NS ? period : ADIS_IMU_BURST_GAP_NS) : 0u;
 }
 
-static int set_mode_timing(struct adis_imu *s, bool low_power)
+static int set_mode_timing(struct adis_imu *dev, bool low_power)
 {
     struct spi_timing t;
     timing_for(low_power, false, &t);
-    s->low_power = low_power;
-    return spi_dev_set_timing(&s->dev, &t);
+    dev->low_power = low_power;
+    return spi_dev_set_timing(&dev->spi, &t);
 }
 
 /* ---- busy handling ---- */
 
-static int resync(struct adis_imu *s);
+static int resync(struct adis_imu *dev);
 
 /* Wait until the part has finished the last command. */
-static void wait_busy(struct adis_imu *s)
+static void wait_busy(struct adis_imu *dev)
 {
-    const struct hal *hal = s->cfg.hal;
-    if (hal_now_ns(hal) < s->busy_until_ns) {
-        hal_delay_until(hal, s->busy_until_ns);
+    const struct hal *hal = dev->cfg.hal;
+    if (hal_now_ns(hal) < dev->busy_until_ns) {
+        hal_delay_until(hal, dev->busy_until_ns);
     }
 }
 
-static int check_ready(const struct adis_imu *s)
+static int check_ready(const struct adis_imu *dev)
 {
-    if (s == NULL) {
+    if (dev == NULL) {
         return INC_ERR_NULL;
     }
-    return s->ready ? INC_OK : INC_ERR_STATE;
+    return dev->ready ? INC_OK : INC_ERR_STATE;
 }
 
 /* Entry of every bus operation: state valid, part not busy, driver in step with the part. */
-static int enter(struct adis_imu *s)
+static int enter(struct adis_imu *dev)
 {
-    int err = check_ready(s);
+    int err = check_ready(dev);
     if (err != INC_OK) {
         return err;
     }
-    wait_busy(s);
-    if (s->resync_pending) {
-        err = resync(s);
+    wait_busy(dev);
+    if (dev->resync_pending) {
+        err = resync(dev);
     }
     return err;
 }
 
-static void start_busy(struct adis_imu *s, uint32_t ms)
+static void start_busy(struct adis_imu *dev, uint32_t ms)
 {
-    s->busy_until_ns = hal_now_ns(s->cfg.hal) + (uint64_t)ms * NS_PER_MS;
+    dev->busy_until_ns = hal_now_ns(dev->cfg.hal) + (uint64_t)ms * NS_PER_MS;
 }
 
 /* ---- data-ready ---- */
 
-static int write_dr(struct adis_imu *s, bool enable, enum adis_imu_dr_line line, bool active_low)
+static int write_dr(struct adis_imu *dev, bool enable, enum adis_imu_dr_line line, bool active_low)
 {
-    uint16_t msc = (uint16_t)(s->msc_ctrl & ~(ADIS_IMU_MSC_DR_EN | ADIS_IMU_MSC_DR_POL_HIGH |
-                                              ADIS_IMU_MSC_DR_LINE_DIO2));
+    uint16_t msc = (uint16_t)(dev->msc_ctrl & ~(ADIS_IMU_MSC_DR_EN | ADIS_IMU_MSC_DR_POL_HIGH |
+                                                ADIS_IMU_MSC_DR_LINE_DIO2));
     int err;
     if (enable) {
         msc |= ADIS_IMU_MSC_DR_EN;
@@ -101,9 +103,9 @@ static int write_dr(struct adis_imu *s, bool enable, enum adis_imu_dr_line line,
         }
     }
     /* The data-ready bits are all in the low byte: one frame. */
-    err = adis_write_byte(&s->dev, ADIS_IMU_REG_MSC_CTRL, (uint8_t)(msc & 0xFFu));
+    err = adis_write_byte(&dev->spi, ADIS_IMU_REG_MSC_CTRL, (uint8_t)(msc & 0xFFu));
     if (err == INC_OK) {
-        s->msc_ctrl = msc;
+        dev->msc_ctrl = msc;
     }
     return err;
 }
@@ -111,31 +113,30 @@ static int write_dr(struct adis_imu *s, bool enable, enum adis_imu_dr_line line,
 /* ---- resync after reset / at init ---- */
 
 /* Read the mode registers (at the low-power limits, safe in either mode) and re-time the bus. */
-static int resync(struct adis_imu *s)
+static int resync(struct adis_imu *dev)
 {
     static const uint8_t addrs[3] = {ADIS_IMU_REG_SMPL_PRD, ADIS_IMU_REG_SENS_AVG,
                                      ADIS_IMU_REG_MSC_CTRL};
     uint16_t v[3];
-    int err = set_mode_timing(s, true);
+    int err = set_mode_timing(dev, true);
     if (err == INC_OK) {
-        err = adis_read_regs(&s->dev, addrs, v, 3u);
+        err = adis_read_regs(&dev->spi, addrs, v, 3u);
     }
     if (err != INC_OK) {
         return err;
     }
-    s->smpl_prd = (uint16_t)(v[0] & 0xFFu);
-    s->sens_avg = v[1];
-    s->msc_ctrl = v[2];
-    err = set_mode_timing(s, adis_imu_smpl_prd_is_low_power((uint8_t)s->smpl_prd));
-    s->resync_pending = false;
+    dev->smpl_prd = (uint16_t)(v[0] & 0xFFu);
+    dev->sens_avg = v[1];
+    dev->msc_ctrl = v[2];
+    err = set_mode_timing(dev, adis_imu_smpl_prd_is_low_power((uint8_t)dev->smpl_prd));
+    dev->resync_pending = false;
     /* A reset restores MSC_CTRL from flash: put data-ready back as configured. */
-    if (err == INC_OK && s->dr_enabled) {
-        const uint16_t want = (uint16_t)(ADIS_IMU_MSC_DR_EN |
-                                         (s->dr_active_low ? 0u : ADIS_IMU_MSC_DR_POL_HIGH) |
-                                         (s->dr_line == ADIS_IMU_DR_DIO2 ? ADIS_IMU_MSC_DR_LINE_DIO2
-                                                                         : 0u));
-        if ((s->msc_ctrl & 0x0007u) != want) {
-            err = write_dr(s, true, (enum adis_imu_dr_line)s->dr_line, s->dr_active_low);
+    if (err == INC_OK && dev->dr_enabled) {
+        const uint16_t want =
+            (uint16_t)(ADIS_IMU_MSC_DR_EN | (dev->dr_active_low ? 0u : ADIS_IMU_MSC_DR_POL_HIGH) |
+                       (dev->dr_line == ADIS_IMU_DR_DIO2 ? ADIS_IMU_MSC_DR_LINE_DIO2 : 0u));
+        if ((dev->msc_ctrl & 0x0007u) != want) {
+            err = write_dr(dev, true, (enum adis_imu_dr_line)dev->dr_line, dev->dr_active_low);
         }
     }
     return err;
@@ -178,7 +179,7 @@ static uint32_t reset_ms_for(uint8_t variant)
     return longest;
 }
 
-int adis_imu_init(struct adis_imu *s, const struct adis_imu_cfg *cfg)
+int adis_imu_init(struct adis_imu *dev, const struct adis_imu_cfg *cfg)
 {
     static const uint8_t addrs[5] = {ADIS_IMU_REG_PROD_ID, ADIS_IMU_REG_SMPL_PRD,
                                      ADIS_IMU_REG_SENS_AVG, ADIS_IMU_REG_MSC_CTRL,
@@ -188,55 +189,55 @@ int adis_imu_init(struct adis_imu *s, const struct adis_imu_cfg *cfg)
     uint8_t found;
     int err;
 
-    if (s == NULL || cfg == NULL) {
+    if (dev == NULL || cfg == NULL) {
         return INC_ERR_NULL;
     }
     {
         /* Zero the whole state without libc. */
-        uint8_t *p = (uint8_t *)s;
+        uint8_t *p = (uint8_t *)dev;
         size_t i;
-        for (i = 0; i < sizeof(*s); i++) {
+        for (i = 0; i < sizeof(*dev); i++) {
             p[i] = 0;
         }
     }
-    s->found_variant = (uint8_t)ADIS_IMU_UNKNOWN;
+    dev->found_variant = (uint8_t)ADIS_IMU_UNKNOWN;
     err = check_cfg(cfg);
     if (err != INC_OK) {
         return err;
     }
-    s->cfg = *cfg;
+    dev->cfg = *cfg;
     /* Start at the low-power limits: valid whatever mode the part is in (Linux does the same,
      * docs/sensor-facts.md §4 "ADIS16400-specific setup"). */
     dc.cs = cfg->cs;
     dc.mode = SPI_MODE_3;
     dc.bits = 16;
     timing_for(true, false, &dc.timing);
-    err = spi_dev_init(&s->dev, cfg->bus, &dc);
+    err = spi_dev_init(&dev->spi, cfg->bus, &dc);
     if (err != INC_OK) {
         return err;
     }
-    s->low_power = true;
+    dev->low_power = true;
     /* A new spi_dev does not know when CS last rose (e.g. an init right after a failed one):
      * keep the longest stall before the first frame. */
     hal_delay_ns(cfg->hal, ADIS_IMU_STALL_LOW_POWER_NS);
     if (cfg->reset_at_init) {
-        err = adis_write_byte(&s->dev, ADIS_IMU_REG_GLOB_CMD, (uint8_t)ADIS_IMU_CMD_SW_RESET);
+        err = adis_write_byte(&dev->spi, ADIS_IMU_REG_GLOB_CMD, (uint8_t)ADIS_IMU_CMD_SW_RESET);
         if (err != INC_OK) {
             return err;
         }
-        start_busy(s, reset_ms_for(cfg->variant));
-        wait_busy(s);
+        start_busy(dev, reset_ms_for(cfg->variant));
+        wait_busy(dev);
     }
-    err = adis_read_regs(&s->dev, addrs, v, 5u);
+    err = adis_read_regs(&dev->spi, addrs, v, 5u);
     if (err != INC_OK) {
         return err;
     }
-    s->found_id = v[0];
+    dev->found_id = v[0];
     found = (uint8_t)adis_imu_variant_from_prod_id(v[0]);
-    s->found_variant = found;
-    s->id_known = true;
+    dev->found_variant = found;
+    dev->id_known = true;
     if (v[0] == 0x0000u || v[0] == 0xFFFFu) {
-        s->bus_errors++;
+        dev->bus_errors++;
         return INC_ERR_BUS; /* nothing drives MISO, or it is stuck */
     }
     if (found == (uint8_t)ADIS_IMU_UNKNOWN ||
@@ -244,61 +245,62 @@ int adis_imu_init(struct adis_imu *s, const struct adis_imu_cfg *cfg)
         return INC_ERR_ID;
     }
     if ((v[4] & ADIS_IMU_DIAG_UNUSED) != 0u) {
-        s->bus_errors++;
+        dev->bus_errors++;
         return INC_ERR_BUS;
     }
-    s->info = adis_imu_variant_info((enum adis_imu_variant)found);
-    s->smpl_prd = (uint16_t)(v[1] & 0xFFu);
-    s->sens_avg = v[2];
-    s->msc_ctrl = v[3];
-    s->init_diag = v[4];
-    s->last_diag = v[4];
-    err = set_mode_timing(s, adis_imu_smpl_prd_is_low_power((uint8_t)s->smpl_prd));
+    dev->info = adis_imu_variant_info((enum adis_imu_variant)found);
+    dev->smpl_prd = (uint16_t)(v[1] & 0xFFu);
+    dev->sens_avg = v[2];
+    dev->msc_ctrl = v[3];
+    dev->init_diag = v[4];
+    dev->last_diag = v[4];
+    err = set_mode_timing(dev, adis_imu_smpl_prd_is_low_power((uint8_t)dev->smpl_prd));
     if (err != INC_OK) {
         return err;
     }
-    s->ready = true;
+    dev->ready = true;
     if (cfg->dr_pin != HAL_PIN_NONE) {
-        err = adis_imu_dr_config(s, true, (enum adis_imu_dr_line)cfg->dr_line, cfg->dr_active_low);
+        err = adis_imu_dr_config(dev, true, (enum adis_imu_dr_line)cfg->dr_line,
+                                 cfg->dr_active_low);
     }
     if (err == INC_OK && cfg->self_test_at_init) {
-        err = adis_imu_self_test(s, NULL);
+        err = adis_imu_self_test(dev, NULL);
     }
     if (err != INC_OK) {
-        s->ready = false;
+        dev->ready = false;
     }
     return err;
 }
 
-int adis_imu_found(const struct adis_imu *s, uint16_t *prod_id, enum adis_imu_variant *variant)
+int adis_imu_found(const struct adis_imu *dev, uint16_t *prod_id, enum adis_imu_variant *variant)
 {
-    if (s == NULL) {
+    if (dev == NULL) {
         return INC_ERR_NULL;
     }
-    if (!s->id_known) {
+    if (!dev->id_known) {
         return INC_ERR_STATE;
     }
     if (prod_id != NULL) {
-        *prod_id = s->found_id;
+        *prod_id = dev->found_id;
     }
     if (variant != NULL) {
-        *variant = (enum adis_imu_variant)s->found_variant;
+        *variant = (enum adis_imu_variant)dev->found_variant;
     }
     return INC_OK;
 }
 
 /* ---- samples ---- */
 
-static unsigned family(const struct adis_imu *s)
+static unsigned family(const struct adis_imu *dev)
 {
-    return s->info->family;
+    return dev->info->family;
 }
 
-static void chan_format(const struct adis_imu *s, unsigned ch, unsigned *bits, bool *is_signed)
+static void chan_format(const struct adis_imu *dev, unsigned ch, unsigned *bits, bool *is_signed)
 {
     switch ((enum adis_imu_chan)ch) {
     case ADIS_IMU_CH_SUPPLY:
-        *bits = s->info->supply_bits;
+        *bits = dev->info->supply_bits;
         *is_signed = false;
         break;
     case ADIS_IMU_CH_TEMP0:
@@ -318,10 +320,10 @@ static void chan_format(const struct adis_imu *s, unsigned ch, unsigned *bits, b
     }
 }
 
-static void sample_clear(const struct adis_imu *s, struct adis_imu_sample *out, uint64_t t)
+static void sample_clear(const struct adis_imu *dev, struct adis_imu_sample *out, uint64_t t)
 {
     unsigned i;
-    out->gyro_range = (uint8_t)adis_imu_gyro_range(s);
+    out->gyro_range = (uint8_t)adis_imu_gyro_range(dev);
     for (i = 0; i < (unsigned)ADIS_IMU_CH_COUNT; i++) {
         out->raw[i] = 0;
         out->counts[i] = 0;
@@ -333,12 +335,12 @@ static void sample_clear(const struct adis_imu *s, struct adis_imu_sample *out, 
     out->t_ns = t;
 }
 
-static void sample_put(const struct adis_imu *s, struct adis_imu_sample *out, unsigned ch,
+static void sample_put(const struct adis_imu *dev, struct adis_imu_sample *out, unsigned ch,
                        uint16_t word)
 {
     unsigned bits;
     bool sgn;
-    chan_format(s, ch, &bits, &sgn);
+    chan_format(dev, ch, &bits, &sgn);
     out->raw[ch] = word;
     out->counts[ch] = sgn ? adis_sign_extend(word, bits) : (int32_t)adis_field(word, bits);
     out->present |= (uint16_t)ADIS_IMU_CH(ch);
@@ -361,18 +363,18 @@ static bool all_stuck(const uint16_t *w, size_t n)
     return true;
 }
 
-static int read_diag_raw(struct adis_imu *s, uint16_t *diag)
+static int read_diag_raw(struct adis_imu *dev, uint16_t *diag)
 {
     uint16_t d = 0;
-    int err = adis_read_reg(&s->dev, ADIS_IMU_REG_DIAG_STAT, &d);
+    int err = adis_read_reg(&dev->spi, ADIS_IMU_REG_DIAG_STAT, &d);
     if (err != INC_OK) {
         return err;
     }
     if ((d & ADIS_IMU_DIAG_UNUSED) != 0u) {
-        s->bus_errors++;
+        dev->bus_errors++;
         return INC_ERR_BUS; /* bit 7 is never set by a live part */
     }
-    s->last_diag = d;
+    dev->last_diag = d;
     *diag = d;
     return INC_OK;
 }
@@ -381,13 +383,13 @@ static int read_diag_raw(struct adis_imu *s, uint16_t *diag)
  * Judge a set of output words (docs/sensor-facts.md §3.3): a bus that cannot be a live part, then EA
  * (DIAG_STAT read and kept), then ND. `stuck` says the words looked like a stuck MISO.
  */
-static int sample_finish(struct adis_imu *s, struct adis_imu_sample *out, const uint16_t *w,
+static int sample_finish(struct adis_imu *dev, struct adis_imu_sample *out, const uint16_t *w,
                          size_t n, bool stuck)
 {
     bool ea = false;
     size_t i;
     if (stuck) {
-        s->bus_errors++;
+        dev->bus_errors++;
         out->valid = 0;
         return INC_ERR_BUS;
     }
@@ -400,23 +402,23 @@ static int sample_finish(struct adis_imu *s, struct adis_imu_sample *out, const 
         uint16_t d = 0;
         int err;
         out->valid = 0;
-        err = read_diag_raw(s, &d);
+        err = read_diag_raw(dev, &d);
         if (err != INC_OK) {
             return err;
         }
         out->diag = d;
-        s->device_errors++;
+        dev->device_errors++;
         return INC_ERR_DEVICE;
     }
     out->valid = (uint16_t)(out->present & ~out->stale);
     if (out->stale != 0u) {
-        s->stale_reads++;
+        dev->stale_reads++;
         return INC_ERR_STALE;
     }
     return INC_OK;
 }
 
-int adis_imu_read_burst(struct adis_imu *s, struct adis_imu_sample *out)
+int adis_imu_read_sample(struct adis_imu *dev, struct adis_imu_sample *out)
 {
     uint16_t rx[1u + 12u];
     struct spi_timing t;
@@ -425,44 +427,44 @@ int adis_imu_read_burst(struct adis_imu *s, struct adis_imu_sample *out)
     if (out == NULL) {
         return INC_ERR_NULL;
     }
-    err = enter(s);
+    err = enter(dev);
     if (err != INC_OK) {
         return err;
     }
-    n = s->info->burst_words;
-    sample_clear(s, out, hal_now_ns(s->cfg.hal));
-    timing_for(s->low_power, true, &t);
-    err = spi_dev_set_timing(&s->dev, &t);
+    n = dev->info->burst_words;
+    sample_clear(dev, out, hal_now_ns(dev->cfg.hal));
+    timing_for(dev->low_power, true, &t);
+    err = spi_dev_set_timing(&dev->spi, &t);
     if (err == INC_OK) {
         /* DIN 0x3E00, then zeros while the part streams the outputs (docs/sensor-facts.md §3.1). */
         const uint16_t tx[1u + 12u] = {ADIS_IMU_BURST_CMD};
-        err = spi_transfer(&s->dev, tx, rx, n + 1u, SPI_CS_HOLD);
+        err = spi_transfer(&dev->spi, tx, rx, n + 1u, SPI_CS_HOLD);
     }
-    err2 = set_mode_timing(s, s->low_power);
+    err2 = set_mode_timing(dev, dev->low_power);
     if (err == INC_OK) {
         err = err2;
     }
     if (err != INC_OK) {
         return err;
     }
-    s->bursts++;
+    dev->bursts++;
     /* Burst words are the output registers in address order from SUPPLY_OUT (0x02). */
     for (i = 0; i < n; i++) {
         const uint8_t addr = (uint8_t)(0x02u + 2u * i);
         unsigned ch;
         for (ch = 0; ch < (unsigned)ADIS_IMU_CH_COUNT; ch++) {
-            if (chan_addr[family(s)][ch] == addr) {
-                sample_put(s, out, ch, rx[1u + i]);
+            if (chan_addr[family(dev)][ch] == addr) {
+                sample_put(dev, out, ch, rx[1u + i]);
                 break;
             }
         }
     }
     /* A live part always reports a supply in range, so n equal 0x0000/0xFFFF words are a bus
      * fault whatever the data. */
-    return sample_finish(s, out, &rx[1], n, all_stuck(&rx[1], n));
+    return sample_finish(dev, out, &rx[1], n, all_stuck(&rx[1], n));
 }
 
-int adis_imu_read_channels(struct adis_imu *s, uint16_t mask, struct adis_imu_sample *out)
+int adis_imu_read_channels(struct adis_imu *dev, uint16_t mask, struct adis_imu_sample *out)
 {
     uint8_t addrs[ADIS_IMU_CH_COUNT];
     uint8_t chans[ADIS_IMU_CH_COUNT];
@@ -474,12 +476,12 @@ int adis_imu_read_channels(struct adis_imu *s, uint16_t mask, struct adis_imu_sa
     if (out == NULL) {
         return INC_ERR_NULL;
     }
-    err = enter(s);
+    err = enter(dev);
     if (err != INC_OK) {
         return err;
     }
     for (ch = 0; ch < (unsigned)ADIS_IMU_CH_COUNT; ch++) {
-        const uint8_t a = chan_addr[family(s)][ch];
+        const uint8_t a = chan_addr[family(dev)][ch];
         if ((mask & ADIS_IMU_CH(ch)) != 0u && a != 0u) {
             addrs[n] = a;
             chans[n] = (uint8_t)ch;
@@ -489,51 +491,70 @@ int adis_imu_read_channels(struct adis_imu *s, uint16_t mask, struct adis_imu_sa
     if (n == 0u) {
         return INC_ERR_INVAL;
     }
-    sample_clear(s, out, hal_now_ns(s->cfg.hal));
-    err = adis_read_regs(&s->dev, addrs, v, n);
+    sample_clear(dev, out, hal_now_ns(dev->cfg.hal));
+    err = adis_read_regs(&dev->spi, addrs, v, n);
     if (err != INC_OK) {
         return err;
     }
-    s->reg_reads++;
+    dev->reg_reads++;
     for (i = 0; i < n; i++) {
-        sample_put(s, out, chans[i], v[i]);
+        sample_put(dev, out, chans[i], v[i]);
     }
     stuck = all_stuck(v, n);
     if (stuck) {
         /* Equal 0x0000 words can be a still part read twice (ND clear, zero data): ask for
          * PROD_ID, which a live part never returns as 0x0000 or 0xFFFF. */
         uint16_t id = 0;
-        err = adis_read_reg(&s->dev, ADIS_IMU_REG_PROD_ID, &id);
+        err = adis_read_reg(&dev->spi, ADIS_IMU_REG_PROD_ID, &id);
         if (err != INC_OK) {
             return err;
         }
-        stuck = id != s->found_id;
+        stuck = id != dev->found_id;
     }
-    return sample_finish(s, out, v, n, stuck);
+    return sample_finish(dev, out, v, n, stuck);
 }
 
-int adis_imu_to_phys(const struct adis_imu *s, const struct adis_imu_sample *in,
+static void phys_clear(struct adis_imu_phys *out)
+{
+    unsigned i;
+    for (i = 0; i < 3u; i++) {
+        out->gyro_dps[i] = out->accel_g[i] = out->magn_gauss[i] = out->temp_c[i] = 0;
+    }
+    out->supply_v = out->aux_v = 0;
+    out->valid = 0;
+}
+
+int adis_imu_to_phys(const struct adis_imu *dev, const struct adis_imu_sample *in,
                      struct adis_imu_phys *out)
 {
     unsigned i;
-    int err = check_ready(s);
+    int err = check_ready(dev);
     if (err != INC_OK) {
         return err;
     }
     if (in == NULL || out == NULL) {
         return INC_ERR_NULL;
     }
-    for (i = 0; i < 3u; i++) {
-        out->gyro_dps[i] = adis_imu_gyro_dps_q16(in->counts[ADIS_IMU_CH_GYRO_X + i],
-                                                 (enum adis_imu_range)in->gyro_range);
-        out->accel_g[i] = adis_imu_accel_g_q16(in->counts[ADIS_IMU_CH_ACCEL_X + i],
-                                               s->info->accel_lsb_ug);
-        out->magn_gauss[i] = adis_imu_magn_gauss_q16(in->counts[ADIS_IMU_CH_MAGN_X + i]);
-        out->temp_c[i] = adis_imu_temp_c_q16(in->counts[ADIS_IMU_CH_TEMP0 + i],
-                                             (enum adis_imu_family)family(s));
+    for (i = 0; i < 3u && err == INC_OK; i++) {
+        err = adis_imu_gyro_dps_from_counts(in->counts[ADIS_IMU_CH_GYRO_X + i],
+                                            (enum adis_imu_range)in->gyro_range, &out->gyro_dps[i]);
+        if (err == INC_OK) {
+            err = adis_imu_accel_g_from_counts(in->counts[ADIS_IMU_CH_ACCEL_X + i],
+                                               dev->info->accel_lsb_ug, &out->accel_g[i]);
+        }
+        if (err == INC_OK) {
+            err = adis_imu_temp_c_from_counts(in->counts[ADIS_IMU_CH_TEMP0 + i],
+                                              (enum adis_imu_family)family(dev), &out->temp_c[i]);
+        }
+        out->magn_gauss[i] = adis_imu_magn_gauss_from_counts(in->counts[ADIS_IMU_CH_MAGN_X + i]);
     }
-    out->supply_v = adis_imu_supply_v_q16(in->counts[ADIS_IMU_CH_SUPPLY]);
-    out->aux_v = adis_imu_aux_v_q16(in->counts[ADIS_IMU_CH_AUX]);
+    if (err != INC_OK) {
+        /* a sample with a gyro range the driver never records: no value at all */
+        phys_clear(out);
+        return err;
+    }
+    out->supply_v = adis_imu_supply_v_from_counts(in->counts[ADIS_IMU_CH_SUPPLY]);
+    out->aux_v = adis_imu_aux_v_from_counts(in->counts[ADIS_IMU_CH_AUX]);
     out->valid = in->valid;
     for (i = 0; i < (unsigned)ADIS_IMU_CH_COUNT; i++) {
         if ((in->valid & ADIS_IMU_CH(i)) == 0u) {
@@ -558,84 +579,84 @@ int adis_imu_to_phys(const struct adis_imu *s, const struct adis_imu_sample *in,
 
 /* ---- registers ---- */
 
-int adis_imu_read_reg(struct adis_imu *s, uint8_t addr, uint16_t *value)
+int adis_imu_read_reg(struct adis_imu *dev, uint8_t addr, uint16_t *value)
 {
     const struct adis_imu_reg_desc *d;
     int err;
     if (value == NULL) {
         return INC_ERR_NULL;
     }
-    err = enter(s);
+    err = enter(dev);
     if (err != INC_OK) {
         return err;
     }
-    d = adis_imu_reg_find((enum adis_imu_family)family(s), addr);
+    d = adis_imu_reg_find((enum adis_imu_family)family(dev), addr);
     if (d == NULL || (d->access & ADIS_IMU_RO) == 0u) {
         return INC_ERR_INVAL;
     }
     if (addr == ADIS_IMU_REG_DIAG_STAT) {
-        return read_diag_raw(s, value);
+        return read_diag_raw(dev, value);
     }
-    return adis_read_reg(&s->dev, addr, value);
+    return adis_read_reg(&dev->spi, addr, value);
 }
 
-int adis_imu_write_reg(struct adis_imu *s, uint8_t addr, uint16_t value)
+int adis_imu_write_reg(struct adis_imu *dev, uint8_t addr, uint16_t value)
 {
     const struct adis_imu_reg_desc *d;
-    int err = enter(s);
+    int err = enter(dev);
     if (err != INC_OK) {
         return err;
     }
-    d = adis_imu_reg_find((enum adis_imu_family)family(s), addr);
+    d = adis_imu_reg_find((enum adis_imu_family)family(dev), addr);
     if (d == NULL || d->access != (uint8_t)ADIS_IMU_RW || addr == ADIS_IMU_REG_SMPL_PRD ||
         addr == ADIS_IMU_REG_SENS_AVG || addr == ADIS_IMU_REG_MSC_CTRL) {
         return INC_ERR_INVAL;
     }
-    return adis_write_reg(&s->dev, addr, value);
+    return adis_write_reg(&dev->spi, addr, value);
 }
 
-int adis_imu_read_diag(struct adis_imu *s, uint16_t *diag)
+int adis_imu_read_diag(struct adis_imu *dev, uint16_t *diag)
 {
     int err;
     if (diag == NULL) {
         return INC_ERR_NULL;
     }
-    err = enter(s);
+    err = enter(dev);
     if (err != INC_OK) {
         return err;
     }
-    return read_diag_raw(s, diag);
+    return read_diag_raw(dev, diag);
 }
 
 /* ---- rate and filter ---- */
 
-int adis_imu_set_sample_period(struct adis_imu *s, uint8_t smpl_prd)
+int adis_imu_set_sample_period(struct adis_imu *dev, uint8_t smpl_prd)
 {
     const bool lp = adis_imu_smpl_prd_is_low_power(smpl_prd);
-    int err = enter(s);
+    int err = enter(dev);
     if (err != INC_OK) {
         return err;
     }
     /* SMPL_PRD[15:8] is unused: one frame. The part takes its new mode when CS rises. */
-    err = adis_write_byte(&s->dev, ADIS_IMU_REG_SMPL_PRD, smpl_prd);
+    err = adis_write_byte(&dev->spi, ADIS_IMU_REG_SMPL_PRD, smpl_prd);
     if (err != INC_OK) {
         return err;
     }
-    s->smpl_prd = smpl_prd;
-    if (lp != s->low_power) {
+    dev->smpl_prd = smpl_prd;
+    if (lp != dev->low_power) {
         /* Across the mode change, keep the longer (low-power) stall once, then the new mode's
          * SCLK and stall. */
-        hal_delay_ns(s->cfg.hal, ADIS_IMU_STALL_LOW_POWER_NS);
+        hal_delay_ns(dev->cfg.hal, ADIS_IMU_STALL_LOW_POWER_NS);
     }
-    return set_mode_timing(s, lp);
+    return set_mode_timing(dev, lp);
 }
 
-uint32_t adis_imu_current_period_ns(const struct adis_imu *s)
+uint32_t adis_imu_current_period_ns(const struct adis_imu *dev)
 {
-    if (s == NULL || !s->ready) {
+    if (dev == NULL || !dev->ready) {
         return 0;
     }
-    return adis_imu_sample_period_ns((uint8_t)s->smpl_prd);
+    return adis_imu_sample_period_ns((uint8_t)dev->smpl_prd);
 }
 
 static unsigned range_min_m(enum adis_imu_range r)
@@ -648,46 +669,46 @@ static unsigned range_min_m(enum adis_imu_range r)
     }
 }
 
-int adis_imu_set_filter(struct adis_imu *s, unsigned taps_log2, enum adis_imu_range range)
+int adis_imu_set_filter(struct adis_imu *dev, unsigned taps_log2, enum adis_imu_range range)
 {
     const unsigned min_m = range_min_m(range);
     unsigned old_m;
     int err;
     if (taps_log2 > ADIS_IMU_SENS_AVG_M_MAX || min_m > ADIS_IMU_SENS_AVG_M_MAX ||
         taps_log2 < min_m) {
-        return check_ready(s) != INC_OK ? check_ready(s) : INC_ERR_INVAL;
+        return check_ready(dev) != INC_OK ? check_ready(dev) : INC_ERR_INVAL;
     }
-    err = enter(s);
+    err = enter(dev);
     if (err != INC_OK) {
         return err;
     }
-    old_m = s->sens_avg & ADIS_IMU_SENS_AVG_M_MASK;
+    old_m = dev->sens_avg & ADIS_IMU_SENS_AVG_M_MASK;
     /* Byte order keeps every intermediate setting legal: when the taps shrink, widen the range
      * first; when they grow, add taps first. */
     if (taps_log2 < old_m) {
-        err = adis_write_byte(&s->dev, ADIS_IMU_REG_SENS_AVG + 1u, (uint8_t)range);
+        err = adis_write_byte(&dev->spi, ADIS_IMU_REG_SENS_AVG + 1u, (uint8_t)range);
         if (err == INC_OK) {
-            err = adis_write_byte(&s->dev, ADIS_IMU_REG_SENS_AVG, (uint8_t)taps_log2);
+            err = adis_write_byte(&dev->spi, ADIS_IMU_REG_SENS_AVG, (uint8_t)taps_log2);
         }
     } else {
-        err = adis_write_byte(&s->dev, ADIS_IMU_REG_SENS_AVG, (uint8_t)taps_log2);
+        err = adis_write_byte(&dev->spi, ADIS_IMU_REG_SENS_AVG, (uint8_t)taps_log2);
         if (err == INC_OK) {
-            err = adis_write_byte(&s->dev, ADIS_IMU_REG_SENS_AVG + 1u, (uint8_t)range);
+            err = adis_write_byte(&dev->spi, ADIS_IMU_REG_SENS_AVG + 1u, (uint8_t)range);
         }
     }
     if (err == INC_OK) {
-        s->sens_avg = (uint16_t)((unsigned)range << ADIS_IMU_SENS_AVG_RANGE_SHIFT | taps_log2);
+        dev->sens_avg = (uint16_t)((unsigned)range << ADIS_IMU_SENS_AVG_RANGE_SHIFT | taps_log2);
     }
     return err;
 }
 
-enum adis_imu_range adis_imu_gyro_range(const struct adis_imu *s)
+enum adis_imu_range adis_imu_gyro_range(const struct adis_imu *dev)
 {
     unsigned code;
-    if (s == NULL) {
+    if (dev == NULL) {
         return ADIS_IMU_RANGE_300;
     }
-    code = (s->sens_avg >> ADIS_IMU_SENS_AVG_RANGE_SHIFT) & 0x7u;
+    code = (dev->sens_avg >> ADIS_IMU_SENS_AVG_RANGE_SHIFT) & 0x7u;
     if (code == (unsigned)ADIS_IMU_RANGE_150) {
         return ADIS_IMU_RANGE_150;
     }
@@ -699,7 +720,7 @@ enum adis_imu_range adis_imu_gyro_range(const struct adis_imu *s)
 
 /* ---- commands ---- */
 
-uint32_t adis_imu_command_ms(const struct adis_imu *s, enum adis_imu_cmd cmd)
+uint32_t adis_imu_command_ms(const struct adis_imu *dev, enum adis_imu_cmd cmd)
 {
     switch (cmd) {
     case ADIS_IMU_CMD_AUTONULL: return ADIS_IMU_AUTONULL_MS;
@@ -708,55 +729,56 @@ uint32_t adis_imu_command_ms(const struct adis_imu *s, enum adis_imu_cmd cmd)
     case ADIS_IMU_CMD_FLASH_UPDATE: return ADIS_IMU_FLASH_UPDATE_MS;
     case ADIS_IMU_CMD_PRECISION_AUTONULL: return ADIS_IMU_PRECISION_AUTONULL_MS;
     case ADIS_IMU_CMD_SW_RESET:
-        return (s != NULL && s->info != NULL) ? s->info->reset_ms : reset_ms_for(ADIS_IMU_ANY);
+        return (dev != NULL && dev->info != NULL) ? dev->info->reset_ms
+                                                  : reset_ms_for(ADIS_IMU_ANY);
     default: return 0u;
     }
 }
 
-int adis_imu_command_start(struct adis_imu *s, enum adis_imu_cmd cmd)
+int adis_imu_command_start(struct adis_imu *dev, enum adis_imu_cmd cmd)
 {
     int err;
-    const uint32_t ms = adis_imu_command_ms(s, cmd);
+    const uint32_t ms = adis_imu_command_ms(dev, cmd);
     if (ms == 0u && cmd != ADIS_IMU_CMD_AUX_DAC_LATCH) {
-        return check_ready(s) != INC_OK ? check_ready(s) : INC_ERR_INVAL;
+        return check_ready(dev) != INC_OK ? check_ready(dev) : INC_ERR_INVAL;
     }
-    err = enter(s); /* an earlier command still running is waited out: this one is not lost */
+    err = enter(dev); /* an earlier command still running is waited out: this one is not lost */
     if (err != INC_OK) {
         return err;
     }
-    err = adis_write_byte(&s->dev, ADIS_IMU_REG_GLOB_CMD, (uint8_t)cmd);
+    err = adis_write_byte(&dev->spi, ADIS_IMU_REG_GLOB_CMD, (uint8_t)cmd);
     if (err != INC_OK) {
         return err;
     }
-    start_busy(s, ms);
+    start_busy(dev, ms);
     if (cmd == ADIS_IMU_CMD_SW_RESET) {
         /* The part comes back with its flash settings (maybe another mode): re-read them
          * before the next access. */
-        s->resync_pending = true;
+        dev->resync_pending = true;
     }
     return INC_OK;
 }
 
-int adis_imu_command(struct adis_imu *s, enum adis_imu_cmd cmd)
+int adis_imu_command(struct adis_imu *dev, enum adis_imu_cmd cmd)
 {
-    int err = adis_imu_command_start(s, cmd);
+    int err = adis_imu_command_start(dev, cmd);
     if (err != INC_OK) {
         return err;
     }
-    return adis_imu_wait_ready(s);
+    return adis_imu_wait_idle(dev);
 }
 
-bool adis_imu_busy(const struct adis_imu *s)
+bool adis_imu_busy(const struct adis_imu *dev)
 {
-    if (s == NULL || !s->ready) {
+    if (dev == NULL || !dev->ready) {
         return false;
     }
-    return hal_now_ns(s->cfg.hal) < s->busy_until_ns;
+    return hal_now_ns(dev->cfg.hal) < dev->busy_until_ns;
 }
 
-int adis_imu_wait_ready(struct adis_imu *s)
+int adis_imu_wait_idle(struct adis_imu *dev)
 {
-    return enter(s);
+    return enter(dev);
 }
 
 /* ---- offsets ---- */
@@ -770,12 +792,12 @@ static int offset_addr(unsigned axis, uint8_t base, uint8_t *addr)
     return INC_OK;
 }
 
-static int set_offset(struct adis_imu *s, unsigned axis, int32_t counts, uint8_t base,
+static int set_offset(struct adis_imu *dev, unsigned axis, int32_t counts, uint8_t base,
                       unsigned bits)
 {
     const int32_t lo = -(int32_t)(1L << (bits - 1u)), hi = (int32_t)(1L << (bits - 1u)) - 1;
     uint8_t addr = 0;
-    int err = check_ready(s);
+    int err = check_ready(dev);
     if (err != INC_OK) {
         return err;
     }
@@ -786,20 +808,20 @@ static int set_offset(struct adis_imu *s, unsigned axis, int32_t counts, uint8_t
     if (counts < lo || counts > hi) {
         return INC_ERR_RANGE;
     }
-    err = enter(s);
+    err = enter(dev);
     if (err != INC_OK) {
         return err;
     }
     /* Two's complement in the low `bits` bits, upper bits clear. */
-    return adis_write_reg(&s->dev, addr, (uint16_t)((uint32_t)counts & ((1UL << bits) - 1UL)));
+    return adis_write_reg(&dev->spi, addr, (uint16_t)((uint32_t)counts & ((1UL << bits) - 1UL)));
 }
 
-static int get_offset(struct adis_imu *s, unsigned axis, int32_t *counts, uint8_t base,
+static int get_offset(struct adis_imu *dev, unsigned axis, int32_t *counts, uint8_t base,
                       unsigned bits)
 {
     uint8_t addr = 0;
     uint16_t v = 0;
-    int err = check_ready(s);
+    int err = check_ready(dev);
     if (err != INC_OK) {
         return err;
     }
@@ -808,10 +830,10 @@ static int get_offset(struct adis_imu *s, unsigned axis, int32_t *counts, uint8_
     }
     err = offset_addr(axis, base, &addr);
     if (err == INC_OK) {
-        err = enter(s);
+        err = enter(dev);
     }
     if (err == INC_OK) {
-        err = adis_read_reg(&s->dev, addr, &v);
+        err = adis_read_reg(&dev->spi, addr, &v);
     }
     if (err == INC_OK) {
         *counts = adis_sign_extend(v, bits);
@@ -819,84 +841,85 @@ static int get_offset(struct adis_imu *s, unsigned axis, int32_t *counts, uint8_
     return err;
 }
 
-int adis_imu_set_gyro_offset(struct adis_imu *s, unsigned axis, int32_t counts)
+int adis_imu_set_gyro_offset(struct adis_imu *dev, unsigned axis, int32_t counts)
 {
-    return set_offset(s, axis, counts, ADIS_IMU_REG_XGYRO_OFF, ADIS_IMU_GYRO_OFF_BITS);
+    return set_offset(dev, axis, counts, ADIS_IMU_REG_XGYRO_OFF, ADIS_IMU_GYRO_OFF_BITS);
 }
 
-int adis_imu_get_gyro_offset(struct adis_imu *s, unsigned axis, int32_t *counts)
+int adis_imu_get_gyro_offset(struct adis_imu *dev, unsigned axis, int32_t *counts)
 {
-    return get_offset(s, axis, counts, ADIS_IMU_REG_XGYRO_OFF, ADIS_IMU_GYRO_OFF_BITS);
+    return get_offset(dev, axis, counts, ADIS_IMU_REG_XGYRO_OFF, ADIS_IMU_GYRO_OFF_BITS);
 }
 
-int adis_imu_set_accel_offset(struct adis_imu *s, unsigned axis, int32_t counts)
+int adis_imu_set_accel_offset(struct adis_imu *dev, unsigned axis, int32_t counts)
 {
-    return set_offset(s, axis, counts, ADIS_IMU_REG_XACCL_OFF, ADIS_IMU_ACCEL_OFF_BITS);
+    return set_offset(dev, axis, counts, ADIS_IMU_REG_XACCL_OFF, ADIS_IMU_ACCEL_OFF_BITS);
 }
 
-int adis_imu_get_accel_offset(struct adis_imu *s, unsigned axis, int32_t *counts)
+int adis_imu_get_accel_offset(struct adis_imu *dev, unsigned axis, int32_t *counts)
 {
-    return get_offset(s, axis, counts, ADIS_IMU_REG_XACCL_OFF, ADIS_IMU_ACCEL_OFF_BITS);
+    return get_offset(dev, axis, counts, ADIS_IMU_REG_XACCL_OFF, ADIS_IMU_ACCEL_OFF_BITS);
 }
 
 /* ---- data-ready ---- */
 
-int adis_imu_dr_config(struct adis_imu *s, bool enable, enum adis_imu_dr_line line, bool active_low)
+int adis_imu_dr_config(struct adis_imu *dev, bool enable, enum adis_imu_dr_line line,
+                       bool active_low)
 {
     const struct hal *hal;
-    int err = check_ready(s);
+    int err = check_ready(dev);
     if (err != INC_OK) {
         return err;
     }
     if ((unsigned)line > (unsigned)ADIS_IMU_DR_DIO2) {
         return INC_ERR_INVAL;
     }
-    if (enable && s->cfg.dr_pin == HAL_PIN_NONE) {
+    if (enable && dev->cfg.dr_pin == HAL_PIN_NONE) {
         return INC_ERR_STATE;
     }
-    err = enter(s);
+    err = enter(dev);
     if (err != INC_OK) {
         return err;
     }
-    hal = s->cfg.hal;
-    err = write_dr(s, enable, line, active_low);
+    hal = dev->cfg.hal;
+    err = write_dr(dev, enable, line, active_low);
     if (err != INC_OK) {
         return err;
     }
-    if (s->cfg.dr_pin != HAL_PIN_NONE) {
-        err = hal_irq_attach(hal, s->cfg.dr_pin, active_low ? HAL_EDGE_FALLING : HAL_EDGE_RISING,
-                             enable ? adis_dr_isr : NULL, &s->dr);
+    if (dev->cfg.dr_pin != HAL_PIN_NONE) {
+        err = hal_irq_attach(hal, dev->cfg.dr_pin, active_low ? HAL_EDGE_FALLING : HAL_EDGE_RISING,
+                             enable ? sensor_dr_isr : NULL, &dev->dr);
         if (err != INC_OK) {
             return err;
         }
     }
-    adis_dr_sync(hal, &s->dr);
-    s->dr_enabled = enable;
-    s->dr_line = (uint8_t)line;
-    s->dr_active_low = active_low;
+    sensor_dr_sync(hal, &dev->dr);
+    dev->dr_enabled = enable;
+    dev->dr_line = (uint8_t)line;
+    dev->dr_active_low = active_low;
     return INC_OK;
 }
 
-int adis_imu_wait_dr(struct adis_imu *s, uint32_t timeout_ns, uint32_t *missed)
+int adis_imu_wait_ready(struct adis_imu *dev, uint32_t timeout_ns, uint32_t *missed)
 {
     const struct hal *hal;
     uint64_t deadline;
     uint32_t pending = 0;
-    int err = enter(s);
+    int err = enter(dev);
     if (err != INC_OK) {
         return err;
     }
-    if (!s->dr_enabled) {
+    if (!dev->dr_enabled) {
         return INC_ERR_STATE;
     }
-    hal = s->cfg.hal;
+    hal = dev->cfg.hal;
     if (timeout_ns == 0u) {
-        timeout_ns = 3u * adis_imu_current_period_ns(s);
+        timeout_ns = 3u * adis_imu_current_period_ns(dev);
     }
     deadline = hal_now_ns(hal) + timeout_ns;
-    err = adis_dr_wait(hal, &s->dr, deadline, &pending);
+    err = sensor_dr_wait(hal, &dev->dr, deadline, &pending);
     if (err == INC_ERR_TIMEOUT) {
-        s->timeouts++;
+        dev->timeouts++;
     }
     if (err == INC_OK && missed != NULL) {
         *missed = pending - 1u;
@@ -904,36 +927,36 @@ int adis_imu_wait_dr(struct adis_imu *s, uint32_t timeout_ns, uint32_t *missed)
     return err;
 }
 
-int adis_imu_dr_flush(struct adis_imu *s)
+int adis_imu_dr_flush(struct adis_imu *dev)
 {
-    int err = check_ready(s);
+    int err = check_ready(dev);
     if (err != INC_OK) {
         return err;
     }
-    adis_dr_sync(s->cfg.hal, &s->dr);
+    sensor_dr_sync(dev->cfg.hal, &dev->dr);
     return INC_OK;
 }
 
 /* ---- self-test ---- */
 
-int adis_imu_self_test(struct adis_imu *s, uint16_t *diag)
+int adis_imu_self_test(struct adis_imu *dev, uint16_t *diag)
 {
     uint16_t msc = 0, d = 0;
     unsigned polls;
-    int err = enter(s);
+    int err = enter(dev);
     if (err != INC_OK) {
         return err;
     }
     /* MSC_CTRL[10] is in the high byte; the part clears it when the test is done (B7). */
-    err = adis_write_byte(&s->dev, ADIS_IMU_REG_MSC_CTRL + 1u,
-                          (uint8_t)((s->msc_ctrl | ADIS_IMU_MSC_SELF_TEST) >> 8));
+    err = adis_write_byte(&dev->spi, ADIS_IMU_REG_MSC_CTRL + 1u,
+                          (uint8_t)((dev->msc_ctrl | ADIS_IMU_MSC_SELF_TEST) >> 8));
     if (err != INC_OK) {
         return err;
     }
-    start_busy(s, s->info->self_test_ms);
-    wait_busy(s);
+    start_busy(dev, dev->info->self_test_ms);
+    wait_busy(dev);
     for (polls = 0;; polls++) {
-        err = adis_read_reg(&s->dev, ADIS_IMU_REG_MSC_CTRL, &msc);
+        err = adis_read_reg(&dev->spi, ADIS_IMU_REG_MSC_CTRL, &msc);
         if (err != INC_OK) {
             return err;
         }
@@ -941,13 +964,13 @@ int adis_imu_self_test(struct adis_imu *s, uint16_t *diag)
             break;
         }
         if (polls >= ADIS_IMU_SELF_TEST_POLLS) {
-            s->timeouts++;
+            dev->timeouts++;
             return INC_ERR_TIMEOUT;
         }
-        hal_delay_ms(s->cfg.hal, ADIS_IMU_SELF_TEST_POLL_MS);
+        hal_delay_ms(dev->cfg.hal, ADIS_IMU_SELF_TEST_POLL_MS);
     }
-    s->msc_ctrl = msc;
-    err = read_diag_raw(s, &d);
+    dev->msc_ctrl = msc;
+    err = read_diag_raw(dev, &d);
     if (err != INC_OK) {
         return err;
     }
@@ -955,7 +978,7 @@ int adis_imu_self_test(struct adis_imu *s, uint16_t *diag)
         *diag = d;
     }
     if ((d & ADIS_IMU_DIAG_SELF_TEST_BITS) != 0u) {
-        s->device_errors++;
+        dev->device_errors++;
         return INC_ERR_DEVICE;
     }
     return INC_OK;

@@ -7,6 +7,8 @@
  */
 #include "inclino/adis_imu.h"
 
+#include "adis_imu_regs.h"
+
 #include "inclino/fx.h"
 
 /*
@@ -259,81 +261,116 @@ static int64_t clamp_counts(int32_t c)
     return c;
 }
 
-int32_t adis_imu_gyro_dps_q16(int32_t counts, enum adis_imu_range range)
+static bool lsb_ok(uint32_t lsb_ug)
 {
-    /* 0.05 deg/s x 65536 = 32768 / 10; the LSB halves with each smaller range (§3.3 [D]). */
+    return lsb_ug != 0u && lsb_ug <= 100000u;
+}
+
+int adis_imu_gyro_dps_from_counts(int32_t counts, enum adis_imu_range range, int32_t *dps_q16)
+{
+    /* 0.05 deg/s x 65536 = 32768 / 10; the LSB halves with each smaller range
+     * (docs/sensor-facts.md §3.3 [D]). */
     uint32_t den;
+    if (dps_q16 == NULL) {
+        return INC_ERR_NULL;
+    }
     switch (range) {
     case ADIS_IMU_RANGE_300: den = 10u; break;
     case ADIS_IMU_RANGE_150: den = 20u; break;
     case ADIS_IMU_RANGE_75: den = 40u; break;
-    default: return 0;
+    default: *dps_q16 = 0; return INC_ERR_INVAL;
     }
-    return fx_div64(clamp_counts(counts) * 32768, den);
+    *dps_q16 = fx_div64(clamp_counts(counts) * 32768, den);
+    return INC_OK;
 }
 
-int32_t adis_imu_accel_g_q16(int32_t counts, uint32_t lsb_ug)
+int adis_imu_accel_g_from_counts(int32_t counts, uint32_t lsb_ug, int32_t *g_q16)
 {
-    if (lsb_ug == 0u || lsb_ug > 100000u) {
-        return 0;
+    if (g_q16 == NULL) {
+        return INC_ERR_NULL;
     }
-    return fx_div64(clamp_counts(counts) * (int64_t)lsb_ug * 65536, 1000000u);
+    if (!lsb_ok(lsb_ug)) {
+        *g_q16 = 0;
+        return INC_ERR_INVAL;
+    }
+    *g_q16 = fx_div64(clamp_counts(counts) * (int64_t)lsb_ug * 65536, 1000000u);
+    return INC_OK;
 }
 
-int32_t adis_imu_temp_c_q16(int32_t counts, enum adis_imu_family f)
+int adis_imu_temp_c_from_counts(int32_t counts, enum adis_imu_family f, int32_t *c_q16)
 {
-    /* In milli-deg C: 25000 + counts x 136 (1636x) or x 140 (1640x); 0 counts = 25 C (§3.3). */
-    const int64_t mc_per_lsb = f == ADIS_IMU_FAMILY_1640X ? 140 : 136;
-    return fx_div64((25000 + clamp_counts(counts) * mc_per_lsb) * 65536, 1000u);
+    /* In milli-deg C: 25000 + counts x 136 (1636x) or x 140 (1640x); 0 counts = 25 C. */
+    int64_t mc_per_lsb;
+    if (c_q16 == NULL) {
+        return INC_ERR_NULL;
+    }
+    switch (f) {
+    case ADIS_IMU_FAMILY_1636X: mc_per_lsb = 136; break;
+    case ADIS_IMU_FAMILY_1640X: mc_per_lsb = 140; break;
+    default: *c_q16 = 0; return INC_ERR_INVAL;
+    }
+    *c_q16 = fx_div64((25000 + clamp_counts(counts) * mc_per_lsb) * 65536, 1000u);
+    return INC_OK;
 }
 
-int32_t adis_imu_supply_v_q16(int32_t counts)
+int32_t adis_imu_supply_v_from_counts(int32_t counts)
 {
     return fx_div64(clamp_counts(counts) * 2418 * 65536, 1000000u); /* 2.418 mV */
 }
 
-int32_t adis_imu_magn_gauss_q16(int32_t counts)
+int32_t adis_imu_magn_gauss_from_counts(int32_t counts)
 {
     return fx_div64(clamp_counts(counts) * 65536, 2000u); /* 0.5 mgauss */
 }
 
-int32_t adis_imu_aux_v_q16(int32_t counts)
+int32_t adis_imu_aux_v_from_counts(int32_t counts)
 {
     return fx_div64(clamp_counts(counts) * 8058 * 65536, 10000000u); /* 805.8 uV */
 }
 
-int16_t adis_imu_gyro_off_from_dps_q16(int32_t dps_q16, bool *saturated)
+int16_t adis_imu_gyro_off_counts_from_dps(int32_t dps_q16, bool *saturated)
 {
     /* x80 ([ADI-IMU-QS]: "multiply by 80, round"), from Q16.16. */
     return (int16_t)adis_offset_counts((int64_t)dps_q16 * ADIS_IMU_GYRO_OFF_PER_DPS, 65536u,
                                        ADIS_IMU_GYRO_OFF_BITS, saturated);
 }
 
-int32_t adis_imu_gyro_off_to_dps_q16(int32_t counts)
+int32_t adis_imu_gyro_off_dps_from_counts(int32_t counts)
 {
     const int32_t c = fx_clamp(counts, ADIS_IMU_GYRO_OFF_MIN, ADIS_IMU_GYRO_OFF_MAX);
     return fx_div64((int64_t)c * 65536, (uint32_t)ADIS_IMU_GYRO_OFF_PER_DPS);
 }
 
-int16_t adis_imu_accel_off_from_g_q16(int32_t g_q16, uint32_t lsb_ug, bool *saturated)
+int adis_imu_accel_off_counts_from_g(int32_t g_q16, uint32_t lsb_ug, int16_t *counts,
+                                     bool *saturated)
 {
-    if (lsb_ug == 0u || lsb_ug > 100000u) {
+    if (counts == NULL) {
+        return INC_ERR_NULL;
+    }
+    if (!lsb_ok(lsb_ug)) {
+        *counts = 0;
         if (saturated != NULL) {
-            *saturated = true;
+            *saturated = false;
         }
-        return 0;
+        return INC_ERR_INVAL;
     }
     /* g / (lsb_ug x 1e-6) = g_q16 x 1e6 / (lsb_ug x 65536) = g_q16 x 15625 / (lsb_ug x 1024):
      * the same quotient, with a divisor that fits 32 bits. */
-    return (int16_t)adis_offset_counts((int64_t)g_q16 * 15625, lsb_ug * 1024u,
-                                       ADIS_IMU_ACCEL_OFF_BITS, saturated);
+    *counts = (int16_t)adis_offset_counts((int64_t)g_q16 * 15625, lsb_ug * 1024u,
+                                          ADIS_IMU_ACCEL_OFF_BITS, saturated);
+    return INC_OK;
 }
 
-int32_t adis_imu_accel_off_to_g_q16(int32_t counts, uint32_t lsb_ug)
+int adis_imu_accel_off_g_from_counts(int32_t counts, uint32_t lsb_ug, int32_t *g_q16)
 {
     const int32_t c = fx_clamp(counts, ADIS_IMU_ACCEL_OFF_MIN, ADIS_IMU_ACCEL_OFF_MAX);
-    if (lsb_ug == 0u || lsb_ug > 100000u) {
-        return 0;
+    if (g_q16 == NULL) {
+        return INC_ERR_NULL;
     }
-    return fx_div64((int64_t)c * (int64_t)lsb_ug * 65536, 1000000u);
+    if (!lsb_ok(lsb_ug)) {
+        *g_q16 = 0;
+        return INC_ERR_INVAL;
+    }
+    *g_q16 = fx_div64((int64_t)c * (int64_t)lsb_ug * 65536, 1000000u);
+    return INC_OK;
 }

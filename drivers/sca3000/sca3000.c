@@ -6,6 +6,8 @@
  */
 #include "inclino/sca3000.h"
 
+#include "sca3000_regs.h"
+
 /* Output data rate in mHz per variant and MODE[1:0] (docs/sensor-facts.md §1.6, Linux chip table). */
 static const uint32_t odr_table[4][3] = {
     {250000u, 250000u, 0u},     /* D01: normal, bypass */
@@ -80,7 +82,7 @@ static int confirm_bus(struct sca3000 *dev)
         return err;
     }
     if (id != dev->revid) {
-        dev->bus_faults++;
+        dev->bus_errors++;
         return INC_ERR_BUS;
     }
     return INC_OK;
@@ -100,7 +102,7 @@ static int check_pattern(struct sca3000 *dev, const uint8_t *buf, size_t n)
 /*
  * Read and check STATUS. confirm_zero: 0x00 (no flag set) is also what a MISO stuck low gives;
  * confirm it with REVID. Internal checks right after a data read skip that (the data read itself
- * was checked); the public sca3000_check_status() does it.
+ * was checked); the public sca3000_read_diag() does it.
  */
 static int status_check(struct sca3000 *dev, bool confirm_zero)
 {
@@ -111,7 +113,7 @@ static int status_check(struct sca3000 *dev, bool confirm_zero)
     }
     if (st == 0xFFu) {
         /* Every bit set, the unnamed ones too: not a status the part gives (MISO high). */
-        dev->bus_faults++;
+        dev->bus_errors++;
         return INC_ERR_BUS;
     }
     if (st == 0x00u && confirm_zero) {
@@ -131,7 +133,7 @@ static int status_check(struct sca3000 *dev, bool confirm_zero)
     return INC_OK;
 }
 
-int sca3000_check_status(struct sca3000 *dev, uint8_t *status)
+int sca3000_read_diag(struct sca3000 *dev, uint8_t *status)
 {
     int err;
     if (dev == NULL) {
@@ -211,14 +213,15 @@ int sca3000_init(struct sca3000 *dev, const struct sca3000_cfg *cfg)
     dev->revid = 0;
     dev->status = 0;
     dev->int_armed = false;
-    dev->int_pending = false;
-    dev->bus_faults = dev->frame_errors = dev->revid_confirms = 0;
+    sensor_dr_reset(&dev->int_edges);
+    dev->pace_started = false;
+    dev->next_ns = dev->sample_ns = 0u;
+    dev->pace_missed = 0u;
+    dev->bus_errors = dev->frame_errors = dev->revid_confirms = 0;
     if (cfg->variant == SCA3000_E01) {
         return INC_ERR_UNSUPPORTED; /* no source describes the E01 (docs/sensor-facts.md §1.1) */
     }
-    if ((unsigned)cfg->variant > (unsigned)SCA3000_E05 || cfg->spi.bits != 8u ||
-        (cfg->spi.mode != SPI_MODE_3 && cfg->spi.mode != SPI_MODE_0) ||
-        cfg->expected_revid == 0xFFu) {
+    if ((unsigned)cfg->variant > (unsigned)SCA3000_E05 || cfg->expected_revid == 0xFFu) {
         return INC_ERR_INVAL;
     }
     if (cfg->int_pin != HAL_PIN_NONE) {
@@ -235,7 +238,16 @@ int sca3000_init(struct sca3000 *dev, const struct sca3000_cfg *cfg)
                                                     : (uint8_t)SCA3000_REVID_DEFAULT;
     dev->hal = cfg->hal;
     dev->int_pin = cfg->int_pin;
-    err = spi_dev_init(&dev->spi, cfg->bus, &cfg->spi);
+    {
+        /* The SPI settings are the part's: built here, as the ADIS drivers build theirs. */
+        static const struct spi_timing timing = SCA3000_SPI_TIMING_INIT;
+        struct spi_dev_cfg dc;
+        dc.cs = cfg->cs;
+        dc.mode = cfg->spi_mode0 ? SPI_MODE_0 : SPI_MODE_3;
+        dc.bits = 8u;
+        dc.timing = timing;
+        err = spi_dev_init(&dev->spi, cfg->bus, &dc);
+    }
     if (err != INC_OK) {
         return err;
     }
@@ -246,7 +258,7 @@ int sca3000_init(struct sca3000 *dev, const struct sca3000_cfg *cfg)
     }
     dev->revid = v;
     if (v == 0x00u || v == 0xFFu) {
-        dev->bus_faults++;
+        dev->bus_errors++;
         return INC_ERR_BUS; /* MISO stuck low/high or no device */
     }
     if (v != dev->expected_revid) {
@@ -325,6 +337,7 @@ int sca3000_set_mode(struct sca3000 *dev, enum sca3000_mode mode)
     if (mode != SCA3000_MODE_MOTION && odr_table[dev->variant][mode] == 0u) {
         return INC_ERR_UNSUPPORTED; /* option 2 exists on the E04/E05 only */
     }
+    dev->pace_started = false; /* the new rate's first sample is one period away */
     return rmw(dev, SCA3000_REG_MODE, SCA3000_MODE_MEAS_MASK, (uint8_t)mode, &dev->mode_reg);
 }
 
@@ -344,6 +357,55 @@ uint32_t sca3000_odr_mhz(const struct sca3000 *dev)
     }
     m = dev->mode_reg & SCA3000_MODE_MEAS_MASK;
     return m == SCA3000_MODE_MOTION ? 0u : odr_table[dev->variant][m];
+}
+
+uint32_t sca3000_period_ns(const struct sca3000 *dev)
+{
+    const uint32_t odr = sca3000_odr_mhz(dev);
+    /* ceil(1e12 / odr_mhz) ns: never shorter than the part's period. */
+    return odr == 0u ? 0u : (uint32_t)((1000000000000ull + odr - 1u) / odr);
+}
+
+int sca3000_wait_ready(struct sca3000 *dev, uint32_t timeout_ns, uint32_t *missed)
+{
+    uint32_t period;
+    uint64_t now;
+    int err = ready(dev);
+    if (missed != NULL) {
+        *missed = 0u;
+    }
+    if (err != INC_OK) {
+        return err;
+    }
+    period = sca3000_period_ns(dev);
+    if (dev->hal == NULL || period == 0u) {
+        return INC_ERR_STATE;
+    }
+    now = hal_now_ns(dev->hal);
+    if (!dev->pace_started) {
+        /* The part may still hold a sample from before (its registers keep the last one),
+         * which would not belong here: the first wait is one period too. */
+        dev->next_ns = now + period;
+        dev->pace_started = true;
+    }
+    dev->pace_missed = 0u;
+    if (now < dev->next_ns) {
+        if (timeout_ns != 0u && dev->next_ns - now > timeout_ns) {
+            hal_delay_until(dev->hal, now + timeout_ns);
+            return INC_ERR_TIMEOUT;
+        }
+        hal_delay_until(dev->hal, dev->next_ns);
+        now = dev->next_ns;
+    } else {
+        const uint64_t late = (now - dev->next_ns) / period;
+        dev->pace_missed = late > UINT32_MAX ? UINT32_MAX : (uint32_t)late;
+    }
+    dev->next_ns = now + period;
+    dev->sample_ns = now;
+    if (missed != NULL) {
+        *missed = dev->pace_missed;
+    }
+    return INC_OK;
 }
 
 int sca3000_read_accel(struct sca3000 *dev, int16_t xyz[3])
@@ -367,16 +429,16 @@ int sca3000_read_accel(struct sca3000 *dev, int16_t xyz[3])
         err = check_pattern(dev, b, 6u);
     }
     if (err == INC_OK) {
-        err = sca3000_decode_accel((uint16_t)(((unsigned)b[0] << 8) | b[1]), &c[0]);
+        err = sca3000_accel_counts_from_word((uint16_t)(((unsigned)b[0] << 8) | b[1]), &c[0]);
     }
     if (err == INC_OK) {
-        err = sca3000_decode_accel((uint16_t)(((unsigned)b[2] << 8) | b[3]), &c[2]);
+        err = sca3000_accel_counts_from_word((uint16_t)(((unsigned)b[2] << 8) | b[3]), &c[2]);
     }
     if (err == INC_OK) {
-        err = sca3000_decode_accel((uint16_t)(((unsigned)b[4] << 8) | b[5]), &c[1]);
+        err = sca3000_accel_counts_from_word((uint16_t)(((unsigned)b[4] << 8) | b[5]), &c[1]);
     }
     if (err == INC_ERR_BUS) {
-        dev->bus_faults++;
+        dev->bus_errors++;
     }
     if (err == INC_OK) {
         err = status_check(dev, false);
@@ -414,7 +476,7 @@ int sca3000_read_temp(struct sca3000 *dev, uint16_t *raw9)
     if (err != INC_OK) {
         return err;
     }
-    t = sca3000_decode_temp((uint16_t)(((unsigned)b[0] << 8) | b[1]));
+    t = sca3000_temp_counts_from_word((uint16_t)(((unsigned)b[0] << 8) | b[1]));
     *raw9 = t;
     return INC_OK;
 }
@@ -606,7 +668,7 @@ int sca3000_ring_count(struct sca3000 *dev, unsigned *count)
         return err;
     }
     if (c > SCA3000_RING_CAPACITY) {
-        dev->bus_faults++;
+        dev->bus_errors++;
         return INC_ERR_BUS; /* more than the ring holds: not a count (e.g. MISO high) */
     }
     if (c == 0u) {
@@ -650,7 +712,7 @@ int sca3000_ring_read(struct sca3000 *dev, int16_t *values, size_t cap, size_t *
             return err;
         }
         for (i = 0; i < k; i++) {
-            values[done + i] = sca3000_decode_ring11(
+            values[done + i] = sca3000_ring_counts_from_word(
                 (uint16_t)(((unsigned)b[2u * i] << 8) | b[2u * i + 1u]));
         }
         done += k;
@@ -661,12 +723,6 @@ int sca3000_ring_read(struct sca3000 *dev, int16_t *values, size_t cap, size_t *
     }
     *n = want;
     return INC_OK;
-}
-
-static void int_callback(void *arg)
-{
-    struct sca3000 *dev = arg;
-    dev->int_pending = true;
 }
 
 int sca3000_int_config(struct sca3000 *dev, uint8_t sources, bool active_high)
@@ -686,10 +742,12 @@ int sca3000_int_config(struct sca3000 *dev, uint8_t sources, bool active_high)
         return err;
     }
     dev->int_active_high = active_high;
-    dev->int_pending = false;
     if (dev->int_pin != HAL_PIN_NONE) {
+        /* the data-ready helper of every driver counts the INT edges (inclino/sensor.h) */
+        sensor_dr_sync(dev->hal, &dev->int_edges);
         err = hal_irq_attach(dev->hal, dev->int_pin,
-                             active_high ? HAL_EDGE_RISING : HAL_EDGE_FALLING, int_callback, dev);
+                             active_high ? HAL_EDGE_RISING : HAL_EDGE_FALLING, sensor_dr_isr,
+                             &dev->int_edges);
         if (err != INC_OK) {
             return err;
         }
@@ -735,20 +793,13 @@ int sca3000_wait_int(struct sca3000 *dev, uint64_t deadline_ns)
     if (!dev->int_armed) {
         return INC_ERR_STATE;
     }
-    for (;;) {
-        uint32_t key = hal_crit_enter(dev->hal);
-        bool pending = dev->int_pending;
-        dev->int_pending = false;
-        hal_crit_exit(dev->hal, key);
-        if (pending || int_line_active(dev)) {
-            return INC_OK;
-        }
-        err = hal_irq_wait(dev->hal, deadline_ns);
-        if (err == INC_ERR_TIMEOUT) {
-            return int_line_active(dev) ? INC_OK : INC_ERR_TIMEOUT;
-        }
-        if (err != INC_OK) {
-            return err;
-        }
+    if (int_line_active(dev)) {
+        sensor_dr_sync(dev->hal, &dev->int_edges); /* active now: the edges so far are seen */
+        return INC_OK;
     }
+    err = sensor_dr_wait(dev->hal, &dev->int_edges, deadline_ns, NULL);
+    if (err == INC_ERR_TIMEOUT && int_line_active(dev)) {
+        return INC_OK;
+    }
+    return err;
 }

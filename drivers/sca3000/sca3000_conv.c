@@ -13,7 +13,7 @@
 /* ug per LSB: 0.75, 1, 2 and 6.25 mg (Linux scale in um/s^2 divided by 9.81). */
 static const uint32_t ug_per_lsb[4] = {750u, 1000u, 2000u, 6250u};
 
-int sca3000_decode_accel(uint16_t word, int16_t *count)
+int sca3000_accel_counts_from_word(uint16_t word, int16_t *count)
 {
     uint32_t u;
     if (count == NULL) {
@@ -27,14 +27,14 @@ int sca3000_decode_accel(uint16_t word, int16_t *count)
     return INC_OK;
 }
 
-int16_t sca3000_decode_ring11(uint16_t word)
+int16_t sca3000_ring_counts_from_word(uint16_t word)
 {
     const uint32_t u = (uint32_t)word >> 5; /* 0..2047, bit 10 is the sign */
     const int32_t s = (int32_t)u - ((u & 0x400u) != 0u ? 2048 : 0);
     return (int16_t)(s * 4);
 }
 
-uint16_t sca3000_decode_temp(uint16_t word)
+uint16_t sca3000_temp_counts_from_word(uint16_t word)
 {
     return (uint16_t)((word >> 5) & 0x1FFu);
 }
@@ -47,7 +47,7 @@ uint32_t sca3000_ug_per_lsb(enum sca3000_variant v)
     return ug_per_lsb[v];
 }
 
-int sca3000_accel_to_ug(int32_t counts, enum sca3000_variant v, int32_t *ug)
+int sca3000_accel_ug_from_counts(int32_t counts, enum sca3000_variant v, int32_t *ug)
 {
     const uint32_t lsb = sca3000_ug_per_lsb(v);
     if (ug == NULL) {
@@ -63,14 +63,14 @@ int sca3000_accel_to_ug(int32_t counts, enum sca3000_variant v, int32_t *ug)
     return INC_OK;
 }
 
-int sca3000_accel_to_q16_g(int32_t counts, enum sca3000_variant v, int32_t *g_q16)
+int sca3000_accel_g_from_counts(int32_t counts, enum sca3000_variant v, int32_t *g_q16)
 {
     int32_t ug;
     int err;
     if (g_q16 == NULL) {
         return INC_ERR_NULL;
     }
-    err = sca3000_accel_to_ug(counts, v, &ug); /* the same checks; ug is exact */
+    err = sca3000_accel_ug_from_counts(counts, v, &ug); /* the same checks; ug is exact */
     if (err != INC_OK) {
         return err;
     }
@@ -79,7 +79,7 @@ int sca3000_accel_to_q16_g(int32_t counts, enum sca3000_variant v, int32_t *g_q1
     return INC_OK;
 }
 
-int sca3000_temp_to_q16_c(int32_t raw9, int32_t *c_q16)
+int sca3000_temp_c_from_counts(int32_t raw9, int32_t *c_q16)
 {
     if (c_q16 == NULL) {
         return INC_ERR_NULL;

@@ -57,13 +57,13 @@ int sensor_self_test(const struct sensor *s, struct sensor_diag *out)
     return s->ops->self_test(s->dev, out);
 }
 
-int sensor_identity(const struct sensor *s, struct sensor_identity *out)
+int sensor_get_identity(const struct sensor *s, struct sensor_identity *out)
 {
     if (s == NULL || s->ops == NULL || s->ops->identity == NULL || out == NULL) return INC_ERR_NULL;
     return s->ops->identity(s->dev, out);
 }
 
-int sensor_info(const struct sensor *s, struct sensor_info *out)
+int sensor_get_info(const struct sensor *s, struct sensor_info *out)
 {
     if (s == NULL || s->ops == NULL || s->ops->info == NULL || out == NULL) return INC_ERR_NULL;
     return s->ops->info(s->dev, out);
@@ -71,7 +71,11 @@ int sensor_info(const struct sensor *s, struct sensor_info *out)
 
 int sensor_next(const struct sensor *s, uint32_t timeout_ns, struct sensor_sample *out)
 {
-    int err = sensor_wait_ready(s, timeout_ns);
+    int err;
+    if (out == NULL) {
+        return INC_ERR_NULL; /* before the wait: no sample is consumed for nothing */
+    }
+    err = sensor_wait_ready(s, timeout_ns);
     if (err == INC_OK) {
         err = sensor_read(s, out);
         if (err == INC_ERR_STALE) {
@@ -79,6 +83,6 @@ int sensor_next(const struct sensor *s, uint32_t timeout_ns, struct sensor_sampl
             if (err == INC_OK) err = sensor_read(s, out);
         }
     }
-    if (err != INC_OK && out != NULL) sample_clear(out);
+    if (err != INC_OK) sample_clear(out);
     return err;
 }

@@ -22,6 +22,11 @@
 
 #include <stddef.h>
 
+/* The calibration record's binding takes the sensor's identity field by field: same numbers. */
+_Static_assert((int)SENSOR_FAMILY_SCA3000 == (int)CALREC_FAMILY_SCA3000, "family numbers");
+_Static_assert((int)SENSOR_FAMILY_ADIS1625X == (int)CALREC_FAMILY_ADIS1625X, "family numbers");
+_Static_assert((int)SENSOR_FAMILY_ADIS163XX == (int)CALREC_FAMILY_ADIS163XX, "family numbers");
+
 /* Internal block flag: every sample so far carried a temperature (bit 8, never reported). */
 #define BLOCK_ALL_TEMP 0x100u
 
@@ -139,12 +144,14 @@ static void block_reset(struct app *a)
     still_restart_window(&a->still);
 }
 
-int app_init(struct app *a, const struct app_cfg *cfg, const struct app_sensor *sensor,
+int app_init(struct app *a, const struct app_cfg *cfg, const struct sensor *sensor,
              struct calstore *store)
 {
+    struct sensor_identity sid;
     int err;
     if (a == NULL || cfg == NULL || sensor == NULL || sensor->ops == NULL ||
-        sensor->ops->read == NULL || sensor->ops->identity == NULL) {
+        sensor->ops->wait_ready == NULL || sensor->ops->read == NULL ||
+        sensor->ops->identity == NULL) {
         return INC_ERR_NULL;
     }
     a->ready = false;
@@ -162,10 +169,16 @@ int app_init(struct app *a, const struct app_cfg *cfg, const struct app_sensor *
     if (err != INC_OK) {
         return INC_ERR_INVAL;
     }
-    err = sensor->ops->identity(sensor->ctx, &a->id);
+    err = sensor_get_identity(sensor, &sid);
     if (err != INC_OK) {
         return err;
     }
+    a->id.family = sid.family;
+    a->id.product = sid.product;
+    a->id.revision = sid.revision;
+    a->id.serial = sid.serial;
+    a->id.lot_id1 = sid.lot_id1;
+    a->id.lot_id2 = sid.lot_id2;
     /* calstore_load leaves the safe default (valid == false) in a->rec on any failure. */
     calrec_set_default(&a->rec);
     a->cal_status = store != NULL ? calstore_load(store, &a->id, &a->rec, NULL)
@@ -303,7 +316,7 @@ static void finish_block(struct app *a, struct app_result *res)
 
 /* ---- Per sample --------------------------------------------------------------------------------- */
 
-int app_step(struct app *a, const struct app_sample *s, int read_err, struct app_corrected *out,
+int app_step(struct app *a, const struct sensor_sample *s, int read_err, struct app_corrected *out,
              bool *done, struct app_result *res)
 {
     struct app_corrected c;
@@ -327,11 +340,11 @@ int app_step(struct app *a, const struct app_sample *s, int read_err, struct app
         return INC_ERR_NULL;
     }
     c.flags = s->flags;
-    c.temp_c = (s->flags & APP_S_HAVE_TEMP) != 0u ? s->temp_c : a->cfg.temp_default_c;
+    c.temp_c = (s->flags & SENSOR_S_HAVE_TEMP) != 0u ? s->temp_c : a->cfg.temp_default_c;
     if (a->n == 0u) {
         a->flags |= BLOCK_ALL_TEMP;
     }
-    if ((s->flags & APP_S_HAVE_TEMP) == 0u) {
+    if ((s->flags & SENSOR_S_HAVE_TEMP) == 0u) {
         a->flags &= ~BLOCK_ALL_TEMP;
     }
     if (a->acc.rec != NULL &&
@@ -346,14 +359,14 @@ int app_step(struct app *a, const struct app_sample *s, int read_err, struct app
     if (err == INC_ERR_RANGE) {
         a->flags |= APP_F_SATURATED;
     }
-    if ((s->flags & APP_S_HAVE_GYRO) != 0u) {
+    if ((s->flags & SENSOR_S_HAVE_GYRO) != 0u) {
         if (cal_gyro_apply(&a->gyro, s->gyro_dps, c.gyro_dps) == INC_ERR_RANGE) {
             a->flags |= APP_F_SATURATED;
         }
     } else {
         c.gyro_dps[0] = c.gyro_dps[1] = c.gyro_dps[2] = 0;
     }
-    if ((s->flags & (APP_S_ACCEL_SAT | APP_S_GYRO_SAT)) != 0u) {
+    if ((s->flags & (SENSOR_S_ACCEL_SAT | SENSOR_S_GYRO_SAT)) != 0u) {
         a->flags |= APP_F_SATURATED;
     }
     (void)still_push(&a->still, c.gyro_dps, c.accel_g, &wdone);
@@ -387,7 +400,7 @@ int app_step(struct app *a, const struct app_sample *s, int read_err, struct app
 
 int app_measure(struct app *a, struct app_result *res)
 {
-    struct app_sample s;
+    struct sensor_sample s;
     bool done = false;
     if (a == NULL || res == NULL) {
         return INC_ERR_NULL;
@@ -396,7 +409,7 @@ int app_measure(struct app *a, struct app_result *res)
         return INC_ERR_STATE;
     }
     for (;;) {
-        const int err = a->sensor.ops->read(a->sensor.ctx, &s);
+        const int err = sensor_next(&a->sensor, 0u, &s);
         const int e2 = app_step(a, &s, err, NULL, &done, res);
         if (e2 != INC_OK) {
             return e2;

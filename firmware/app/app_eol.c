@@ -16,7 +16,7 @@ int app_eol_face(struct app *a, uint32_t n, fx_q16_t max_span_g, fx_q16_t max_sp
                  struct app_face *out)
 {
     struct fx_sum temp;
-    uint32_t k, flags = APP_S_HAVE_GYRO | APP_S_HAVE_TEMP;
+    uint32_t k, flags = SENSOR_S_HAVE_GYRO | SENSOR_S_HAVE_TEMP;
     fx_q16_t acc_mean[3], gyro_mean[3] = {0, 0, 0}, temp_mean = 0;
     unsigned i;
     int err;
@@ -33,8 +33,8 @@ int app_eol_face(struct app *a, uint32_t n, fx_q16_t max_span_g, fx_q16_t max_sp
     cal_avg_reset(&a->eol_g);
     fx_sum_reset(&temp);
     for (k = 0; k < n; k++) {
-        struct app_sample s;
-        err = a->sensor.ops->read(a->sensor.ctx, &s);
+        struct sensor_sample s;
+        err = sensor_next(&a->sensor, 0u, &s);
         if (err != INC_OK) {
             return err;
         }
@@ -47,13 +47,13 @@ int app_eol_face(struct app *a, uint32_t n, fx_q16_t max_span_g, fx_q16_t max_sp
     if (err != INC_OK) {
         return err;
     }
-    if ((flags & APP_S_HAVE_GYRO) != 0u) {
+    if ((flags & SENSOR_S_HAVE_GYRO) != 0u) {
         err = cal_avg_mean(&a->eol_g, max_span_dps, gyro_mean);
         if (err != INC_OK) {
             return err;
         }
     }
-    if ((flags & APP_S_HAVE_TEMP) != 0u) {
+    if ((flags & SENSOR_S_HAVE_TEMP) != 0u) {
         (void)fx_sum_mean(&temp, &temp_mean);
     }
     for (i = 0; i < 3u; i++) {
@@ -62,7 +62,7 @@ int app_eol_face(struct app *a, uint32_t n, fx_q16_t max_span_g, fx_q16_t max_sp
     }
     out->temp_c = temp_mean;
     out->n = n;
-    out->flags = flags & (APP_S_HAVE_GYRO | APP_S_HAVE_TEMP);
+    out->flags = flags & (SENSOR_S_HAVE_GYRO | SENSOR_S_HAVE_TEMP);
     return INC_OK;
 }
 
@@ -80,7 +80,7 @@ int app_eol_six_position(const struct app_face face[CAL_FACES], struct calrec *r
         for (i = 0; i < 3u; i++) {
             means[f][i] = face[f].accel_g[i];
         }
-        gyro = gyro && (face[f].flags & APP_S_HAVE_GYRO) != 0u;
+        gyro = gyro && (face[f].flags & SENSOR_S_HAVE_GYRO) != 0u;
     }
     err = cal_six_position((const fx_q16_t(*)[3])means, off, gain);
     if (err != INC_OK) {

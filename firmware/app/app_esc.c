@@ -73,13 +73,16 @@ int app_esc_set_gyro_correction(struct app_esc *e, const struct gyrocal_correcti
     return INC_OK;
 }
 
-/* The saturation bits of att_sample.sat from the sample's flags: the part reports saturation per
- * sample, not per axis, so a flagged sample marks every axis of that sensor. */
+/* The saturation bits of att_sample.sat (0-2 gyro x y z, 3-5 accel) from the sample's per-axis
+ * flags (inclino/sensor.h). */
 static uint8_t sat_bits(uint32_t flags)
 {
     uint8_t s = 0u;
-    if ((flags & APP_S_GYRO_SAT) != 0u) s |= ATT_SAT_GYRO_MASK;
-    if ((flags & APP_S_ACCEL_SAT) != 0u) s |= ATT_SAT_ACC_MASK;
+    unsigned i;
+    for (i = 0; i < 3u; i++) {
+        if ((flags & (SENSOR_S_GYRO_SAT_X << i)) != 0u) s |= (uint8_t)(1u << i);
+        if ((flags & (SENSOR_S_ACCEL_SAT_X << i)) != 0u) s |= (uint8_t)(8u << i);
+    }
     return s;
 }
 
@@ -107,7 +110,7 @@ static void update_mode(struct app_esc *e, struct app *a, const struct app_vehic
     }
 }
 
-int app_esc_step(struct app_esc *e, struct app *a, const struct app_sample *s, int read_err,
+int app_esc_step(struct app_esc *e, struct app *a, const struct sensor_sample *s, int read_err,
                  const struct app_vehicle *veh, struct app_esc_output *out, bool *have_out)
 {
     struct app_corrected c;

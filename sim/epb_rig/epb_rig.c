@@ -309,25 +309,19 @@ int epb_rig_power_up(struct epb_rig *r, const struct app_cfg *cfg)
         if (err == INC_OK) {
             err = adis_imu_dr_flush(&r->imu);
         }
-        if (err == INC_OK) {
-            err = app_adis_sensor(&r->ad_adis, &r->imu, &r->sensor);
-        }
+        r->sensor.ops = &adis_imu_sensor_ops;
+        r->sensor.dev = &r->imu;
     } else {
         struct sca3000_cfg c;
-        static const struct spi_timing t = SCA3000_SPI_TIMING_INIT;
         memset(&c, 0, sizeof(c));
         c.bus = &r->board.spi.bus;
-        c.spi.cs = SIM_BOARD_CS(0);
-        c.spi.mode = SPI_MODE_3;
-        c.spi.bits = 8;
-        c.spi.timing = t;
+        c.cs = SIM_BOARD_CS(0);
         c.variant = (enum sca3000_variant)r->info->sim_variant; /* same order */
         c.hal = &r->board.hal;
         c.int_pin = HAL_PIN_NONE;
         err = sca3000_init(&r->sca_dev, &c);
-        if (err == INC_OK) {
-            err = app_sca3000_sensor(&r->ad_sca, &r->sca_dev, &r->board.hal, &r->sensor);
-        }
+        r->sensor.ops = &sca3000_sensor_ops;
+        r->sensor.dev = &r->sca_dev;
     }
     if (err != INC_OK) {
         return err;
@@ -431,7 +425,7 @@ struct app *epb_rig_app(struct epb_rig *r)
     return &r->app;
 }
 
-const struct app_sensor *epb_rig_sensor(const struct epb_rig *r)
+const struct sensor *epb_rig_sensor(const struct epb_rig *r)
 {
     return &r->sensor;
 }

@@ -15,6 +15,8 @@
  */
 #include "fixture.h"
 
+#include "adis16255_regs.h" /* white-box: the driver's register map */
+
 #include "inclino/adis.h"
 
 struct span {
@@ -56,7 +58,7 @@ static uint64_t minimum_ns(unsigned n, uint32_t stall)
 /* The engine's exact time for n toggled frames with the driver's timing. */
 static uint64_t engine_ns(unsigned n, uint32_t stall)
 {
-    const struct spi_timing *t = &fx.drv.dev.cfg.timing;
+    const struct spi_timing *t = &fx.drv.spi.cfg.timing;
     const uint64_t h2 = t->sclk_period_ns - t->sclk_period_ns / 2u;
     return n * (t->cs_setup_ns + 16u * (uint64_t)t->sclk_period_ns - h2 + t->cs_hold_ns) +
            (n - 1u) * (uint64_t)stall;
@@ -88,8 +90,8 @@ static void test_bus_efficiency(void)
     /* Separate reads. */
     hal_delay_ms(&fx.board.hal, 4);
     span_start();
-    CHECK_OK(adis_read_reg(&fx.drv.dev, ADIS16255_REG_GYRO_OUT, &g));
-    CHECK_OK(adis_read_reg(&fx.drv.dev, ADIS16255_REG_TEMP_OUT, &t));
+    CHECK_OK(adis_read_reg(&fx.drv.spi, ADIS16255_REG_GYRO_OUT, &g));
+    CHECK_OK(adis_read_reg(&fx.drv.spi, ADIS16255_REG_TEMP_OUT, &t));
     sep = span.last_rise - span.first_fall;
     CHECK_EQ_INT(span.falls, 4);
     CHECK_EQ_HEX(g, 0x8555);

@@ -42,7 +42,7 @@ static void test_gyro(void)
     long n;
     double worst = 0.0;
     for (i = 0; i < sizeof(v) / sizeof(v[0]); i++) {
-        CHECK_OK(adis16255_gyro_dps_q16(v[i].w, v[i].r, &q));
+        CHECK_OK(adis16255_gyro_dps_from_word(v[i].w, v[i].r, &q));
         CHECK_EQ_INT(q, v[i].q);
     }
     /* The whole domain, every range: |error| <= 0.5 LSB of Q16.16. */
@@ -52,51 +52,52 @@ static void test_gyro(void)
         unsigned k;
         for (k = 0; k < 3u; k++) {
             double e;
-            CHECK_OK(adis16255_gyro_dps_q16((uint16_t)((unsigned long)n & 0x3FFFu), rs[k], &q));
+            CHECK_OK(
+                adis16255_gyro_dps_from_word((uint16_t)((unsigned long)n & 0x3FFFu), rs[k], &q));
             e = (double)q - exact_q16(n, 5.0 * (double)rs[k], 273.0);
             if (e < 0) e = -e;
             if (e > worst) worst = e;
         }
     }
     CHECK(worst <= 0.5);
-    CHECK_ERR(adis16255_gyro_dps_q16(0x0555, (enum adis16255_range)3, &q), INC_ERR_INVAL);
+    CHECK_ERR(adis16255_gyro_dps_from_word(0x0555, (enum adis16255_range)3, &q), INC_ERR_INVAL);
     CHECK_EQ_INT(q, 0);
-    CHECK_ERR(adis16255_gyro_dps_q16(0x0555, ADIS16255_RANGE_320, NULL), INC_ERR_NULL);
+    CHECK_ERR(adis16255_gyro_dps_from_word(0x0555, ADIS16255_RANGE_320, NULL), INC_ERR_NULL);
 }
 
 static void test_temp_supply_angle(void)
 {
     long n;
     double worst = 0.0;
-    CHECK_EQ_INT(adis16255_temp_c_q16(0x0000), 1638400);   /* 25 °C */
-    CHECK_EQ_INT(adis16255_temp_c_q16(0x0001), 1647922);   /* 25.1453 */
-    CHECK_EQ_INT(adis16255_temp_c_q16(0x0FFF), 1628878);   /* -1 */
-    CHECK_EQ_INT(adis16255_temp_c_q16(0x0067), 2619205);   /* 103 -> 39.9659 °C */
-    CHECK_EQ_INT(adis16255_temp_c_q16(0x07FF), 21130713);  /* +2047 */
-    CHECK_EQ_INT(adis16255_temp_c_q16(0x0800), -17863436); /* -2048 */
-    CHECK_EQ_INT(adis16255_temp_c_q16(0xFF0F), -656494);   /* -241, D13:D12/ND/EA ignored */
-    CHECK_EQ_INT(adis16255_supply_v_q16(0x0000), 0);
-    CHECK_EQ_INT(adis16255_supply_v_q16(0x0001), 120);
-    CHECK_EQ_INT(adis16255_supply_v_q16(0x0AAA), 327680); /* 2730 -> 5.0000 V */
-    CHECK_EQ_INT(adis16255_supply_v_q16(0x0FFF), 491520); /* 4095 -> 7.5000 V */
-    CHECK_EQ_INT(adis16255_supply_v_q16(0x89D0), 301513); /* 2512 -> 4.6007 V, ND set */
-    CHECK_EQ_INT(adis16255_angle_deg_q16(0x0000), 0);
-    CHECK_EQ_INT(adis16255_angle_deg_q16(0x0001), 2401);
-    CHECK_EQ_INT(adis16255_angle_deg_q16(0x0110), 652959);   /* 272 -> 9.9634 ° */
-    CHECK_EQ_INT(adis16255_angle_deg_q16(0xBFFF), 39328802); /* 16383 */
+    CHECK_EQ_INT(adis16255_temp_c_from_word(0x0000), 1638400);   /* 25 °C */
+    CHECK_EQ_INT(adis16255_temp_c_from_word(0x0001), 1647922);   /* 25.1453 */
+    CHECK_EQ_INT(adis16255_temp_c_from_word(0x0FFF), 1628878);   /* -1 */
+    CHECK_EQ_INT(adis16255_temp_c_from_word(0x0067), 2619205);   /* 103 -> 39.9659 °C */
+    CHECK_EQ_INT(adis16255_temp_c_from_word(0x07FF), 21130713);  /* +2047 */
+    CHECK_EQ_INT(adis16255_temp_c_from_word(0x0800), -17863436); /* -2048 */
+    CHECK_EQ_INT(adis16255_temp_c_from_word(0xFF0F), -656494);   /* -241, D13:D12/ND/EA ignored */
+    CHECK_EQ_INT(adis16255_supply_v_from_word(0x0000), 0);
+    CHECK_EQ_INT(adis16255_supply_v_from_word(0x0001), 120);
+    CHECK_EQ_INT(adis16255_supply_v_from_word(0x0AAA), 327680); /* 2730 -> 5.0000 V */
+    CHECK_EQ_INT(adis16255_supply_v_from_word(0x0FFF), 491520); /* 4095 -> 7.5000 V */
+    CHECK_EQ_INT(adis16255_supply_v_from_word(0x89D0), 301513); /* 2512 -> 4.6007 V, ND set */
+    CHECK_EQ_INT(adis16255_angle_deg_from_word(0x0000), 0);
+    CHECK_EQ_INT(adis16255_angle_deg_from_word(0x0001), 2401);
+    CHECK_EQ_INT(adis16255_angle_deg_from_word(0x0110), 652959);   /* 272 -> 9.9634 ° */
+    CHECK_EQ_INT(adis16255_angle_deg_from_word(0xBFFF), 39328802); /* 16383 */
     for (n = -2048; n <= 2047; n++) {
-        double e = (double)adis16255_temp_c_q16((uint16_t)((unsigned long)n & 0xFFFu)) -
+        double e = (double)adis16255_temp_c_from_word((uint16_t)((unsigned long)n & 0xFFFu)) -
                    (25.0 * 65536.0 + exact_q16(n, 1453.0, 10000.0));
         if (e < 0) e = -e;
         if (e > worst) worst = e;
     }
     for (n = 0; n <= 4095; n++) {
-        double e = (double)adis16255_supply_v_q16((uint16_t)n) - exact_q16(n, 18315.0, 1e7);
+        double e = (double)adis16255_supply_v_from_word((uint16_t)n) - exact_q16(n, 18315.0, 1e7);
         if (e < 0) e = -e;
         if (e > worst) worst = e;
     }
     for (n = 0; n <= 16383; n++) {
-        double e = (double)adis16255_angle_deg_q16((uint16_t)n) - exact_q16(n, 10.0, 273.0);
+        double e = (double)adis16255_angle_deg_from_word((uint16_t)n) - exact_q16(n, 10.0, 273.0);
         if (e < 0) e = -e;
         if (e > worst) worst = e;
     }
@@ -129,30 +130,31 @@ static void test_gyro_off(void)
     for (i = 0; i < sizeof(v) / sizeof(v[0]); i++) {
         w = 0xFFFF;
         sat = !v[i].sat;
-        CHECK_OK(adis16255_gyro_off_from_dps_q16(v[i].q, &w, &sat));
+        CHECK_OK(adis16255_gyro_off_word_from_dps(v[i].q, &w, &sat));
         CHECK_EQ_HEX(w, v[i].w);
         CHECK_EQ_INT(sat, v[i].sat);
     }
-    CHECK_EQ_INT(adis16255_gyro_off_dps_q16(0x001), 1200);
-    CHECK_EQ_INT(adis16255_gyro_off_dps_q16(0xFFF), -1200);
-    CHECK_EQ_INT(adis16255_gyro_off_dps_q16(0x7FF), 2457000);
-    CHECK_EQ_INT(adis16255_gyro_off_dps_q16(0x800), -2458200);
-    CHECK_EQ_INT(adis16255_gyro_off_dps_q16(0xF93), -130832); /* -109 */
+    CHECK_EQ_INT(adis16255_gyro_off_dps_from_word(0x001), 1200);
+    CHECK_EQ_INT(adis16255_gyro_off_dps_from_word(0xFFF), -1200);
+    CHECK_EQ_INT(adis16255_gyro_off_dps_from_word(0x7FF), 2457000);
+    CHECK_EQ_INT(adis16255_gyro_off_dps_from_word(0x800), -2458200);
+    CHECK_EQ_INT(adis16255_gyro_off_dps_from_word(0xF93), -130832); /* -109 */
     /* Round trip: every count survives count -> °/s -> count. */
     for (n = -2048; n <= 2047; n++) {
         const uint16_t word = (uint16_t)((unsigned long)n & 0xFFFu);
-        double e = (double)adis16255_gyro_off_dps_q16(word) - exact_q16(n, 5.0, 273.0);
+        double e = (double)adis16255_gyro_off_dps_from_word(word) - exact_q16(n, 5.0, 273.0);
         if (e < 0) e = -e;
         if (e > worst) worst = e;
-        CHECK_OK(adis16255_gyro_off_from_dps_q16(adis16255_gyro_off_dps_q16(word), &w, &sat));
+        CHECK_OK(
+            adis16255_gyro_off_word_from_dps(adis16255_gyro_off_dps_from_word(word), &w, &sat));
         if (w != word || sat) {
             CHECK_EQ_HEX(w, word);
             break;
         }
     }
     CHECK(worst <= 0.5);
-    CHECK_ERR(adis16255_gyro_off_from_dps_q16(0, NULL, &sat), INC_ERR_NULL);
-    CHECK_ERR(adis16255_gyro_off_from_dps_q16(0, &w, NULL), INC_ERR_NULL);
+    CHECK_ERR(adis16255_gyro_off_word_from_dps(0, NULL, &sat), INC_ERR_NULL);
+    CHECK_ERR(adis16255_gyro_off_word_from_dps(0, &w, NULL), INC_ERR_NULL);
 }
 
 static void test_rate_and_sclk(void)

@@ -9,6 +9,8 @@
  */
 #include "fixture.h"
 
+#include "adis16255_regs.h" /* white-box: the driver's register map */
+
 #include "inclino/adis.h"
 
 #include <math.h>
@@ -27,17 +29,17 @@ static void test_init(void)
 {
     fx_setup(true);
     CHECK_OK(init_default());
-    CHECK(fx.drv.initialised);
+    CHECK(fx.drv.ready);
     CHECK_EQ_INT(fx.drv.id_check, ADIS16255_ID_OK);
     CHECK_EQ_HEX(sim_adis16255_peek(&fx.part, ADIS16255_REG_SMPL_PRD), 0x0001);
     CHECK_EQ_HEX(sim_adis16255_peek(&fx.part, ADIS16255_REG_SENS_AVG), 0x0402);
     CHECK_EQ_HEX(sim_adis16255_peek(&fx.part, ADIS16255_REG_MSC_CTRL), 0x0006);
     /* 256 SPS: the fast SCLK (2 MHz <= 2.5 MHz) and the 30 us stall. */
     CHECK(fx.drv.fast);
-    CHECK_EQ_INT(fx.drv.dev.cfg.timing.sclk_period_ns, 500);
-    CHECK_EQ_INT(fx.drv.dev.cfg.timing.stall_ns, ADIS16255_STALL_NS);
-    CHECK_EQ_INT(fx.drv.dev.cfg.mode, SPI_MODE_3);
-    CHECK_EQ_INT(fx.drv.dev.cfg.bits, 16);
+    CHECK_EQ_INT(fx.drv.spi.cfg.timing.sclk_period_ns, 500);
+    CHECK_EQ_INT(fx.drv.spi.cfg.timing.stall_ns, ADIS16255_STALL_NS);
+    CHECK_EQ_INT(fx.drv.spi.cfg.mode, SPI_MODE_3);
+    CHECK_EQ_INT(fx.drv.spi.cfg.bits, 16);
     CHECK(fx.drv.dr_attached);
     CHECK_NO_VIOLATIONS();
 
@@ -53,8 +55,8 @@ static void test_init(void)
     fx.cfg.self_test_at_init = true;
     CHECK_OK(init_default());
     CHECK(!fx.drv.fast);
-    CHECK_EQ_INT(fx.drv.dev.cfg.timing.sclk_period_ns, 1250);
-    CHECK_EQ_INT(fx.drv.dev.cfg.timing.stall_ns, ADIS16255_STALL_SLOW_NS);
+    CHECK_EQ_INT(fx.drv.spi.cfg.timing.sclk_period_ns, 1250);
+    CHECK_EQ_INT(fx.drv.spi.cfg.timing.stall_ns, ADIS16255_STALL_SLOW_NS);
     CHECK_EQ_HEX(sim_adis16255_peek(&fx.part, ADIS16255_REG_SMPL_PRD), 0x0082);
     CHECK_EQ_HEX(sim_adis16255_peek(&fx.part, ADIS16255_REG_SENS_AVG), 0x0104);
     CHECK_EQ_HEX(sim_adis16255_peek(&fx.part, ADIS16255_REG_MSC_CTRL), 0x0005);
@@ -187,7 +189,7 @@ static void test_hooks(void)
     CHECK_OK(adis16255_wait_sample(&fx.drv, 0, &s));
     /* 1.5 °/s -> round(20.475) = 20 counts; 27 °C -> round(13.76) = 14 counts. */
     CHECK_EQ_HEX(s.gyro_word & 0x3FFFu, 20);
-    CHECK_OK(adis16255_gyro_dps_q16(20, ADIS16255_RANGE_320, &q));
+    CHECK_OK(adis16255_gyro_dps_from_word(20, ADIS16255_RANGE_320, &q));
     CHECK_EQ_INT(s.rate_dps_q16, q);
     CHECK_EQ_HEX(s.temp_word & 0x0FFFu, 14);
     CHECK(bm.calls >= 1u);
@@ -249,7 +251,7 @@ static void test_ea_status(void)
     CHECK(s.status.supply_low);
     CHECK(fx.drv.status.supply_low);
     CHECK_EQ_INT(s.rate_dps_q16, 0);
-    CHECK_OK(adis16255_read_status(&fx.drv, &st)); /* a live condition: still set */
+    CHECK_OK(adis16255_read_diag(&fx.drv, &st)); /* a live condition: still set */
     CHECK(st.supply_low && !st.supply_high);
     /* Above 5.25 V. */
     fx_input(10.0, 25.0, 5.4);
@@ -264,7 +266,7 @@ static void test_ea_status(void)
     fx_input(100.0, 25.0, 5.0);
     CHECK_ERR(adis16255_wait_sample(&fx.drv, 0, &s), INC_ERR_DEVICE); /* filter still > 320 */
     fx_wait_ms(20);
-    CHECK_OK(adis16255_read_status(&fx.drv, &st));
+    CHECK_OK(adis16255_read_diag(&fx.drv, &st));
     CHECK_OK(adis16255_wait_sample(&fx.drv, 0, &s));
     CHECK(s.valid);
     CHECK_EQ_INT(s.rate_dps_q16, 6553600);
@@ -280,9 +282,9 @@ static void test_spi_framing_error(void)
     CHECK_OK(adis16255_wait_sample(&fx.drv, 0, &s));
     /* The driver breaks the stall once (5 us < 30 us): the part drops the frame, logs it, and
      * flags an SPI communication failure. */
-    fx.drv.dev.cfg.timing.stall_ns = 5000;
-    CHECK_OK(adis_read_reg(&fx.drv.dev, ADIS16255_REG_SUPPLY_OUT, &v));
-    fx.drv.dev.cfg.timing.stall_ns = ADIS16255_STALL_NS;
+    fx.drv.spi.cfg.timing.stall_ns = 5000;
+    CHECK_OK(adis_read_reg(&fx.drv.spi, ADIS16255_REG_SUPPLY_OUT, &v));
+    fx.drv.spi.cfg.timing.stall_ns = ADIS16255_STALL_NS;
     CHECK(sim_violation_count(&fx.board.log, SIM_VIOL_STALL) >= 1u);
     CHECK_EQ_INT(fx.board.log.v[0].kind, SIM_VIOL_STALL);
     CHECK_EQ_INT(fx.board.log.v[0].limit_ns, 30000);
@@ -319,7 +321,7 @@ static void test_commands(void)
     CHECK_OK(adis16255_autonull(&fx.drv));
     CHECK_EQ_HEX(sim_adis16255_peek(&fx.part, ADIS16255_REG_GYRO_OFF), 0xFAE); /* -82 */
     CHECK_OK(adis16255_get_gyro_offset(&fx.drv, &off));
-    CHECK_EQ_INT(off, adis16255_gyro_off_dps_q16(0xFAE));
+    CHECK_EQ_INT(off, adis16255_gyro_off_dps_from_word(0xFAE));
     CHECK(fabs(fx.part.rate_out_dps) <= 0.5 * SIM_ADIS16255_OFF_LSB); /* achieved bias */
     CHECK_OK(adis16255_wait_sample(&fx.drv, 0, &s));
     CHECK(s.valid);
@@ -421,9 +423,9 @@ static void test_self_test(void)
     CHECK(!fx.drv.status.self_test_fail);
 
     /* The self-test moves the output (+25 °/s in the model) while it runs. */
-    CHECK_OK(adis_write_byte(&fx.drv.dev, ADIS16255_REG_MSC_CTRL + 1u, 0x04));
+    CHECK_OK(adis_write_byte(&fx.drv.spi, ADIS16255_REG_MSC_CTRL + 1u, 0x04));
     fx_wait_ms(25);
-    CHECK_OK(adis_read_reg(&fx.drv.dev, ADIS16255_REG_GYRO_OUT, &v));
+    CHECK_OK(adis_read_reg(&fx.drv.spi, ADIS16255_REG_GYRO_OUT, &v));
     CHECK_EQ_HEX(v & 0x3FFFu, 341); /* 25 / 0.07326 = 341.25 */
     CHECK(sim_adis16255_peek(&fx.part, ADIS16255_REG_MSC_CTRL) & ADIS16255_MSC_ST_INT);
     fx_wait_ms(10);
@@ -435,7 +437,7 @@ static void test_self_test(void)
     sim_adis16255_fail_self_test(&fx.part, true);
     fx.cfg.self_test_at_init = true;
     CHECK_ERR(init_default(), INC_ERR_DEVICE);
-    CHECK(!fx.drv.initialised);
+    CHECK(!fx.drv.ready);
     CHECK(fx.drv.status.self_test_fail);
 
     /* A self-test that never finishes: timeout after ADIS16255_SELF_TEST_TIMEOUT_MS. */
@@ -520,7 +522,7 @@ static void test_no_device_init(void)
     fx_setup(false);
     CHECK_ERR(init_default(), INC_ERR_BUS);
     CHECK_EQ_INT(fx.drv.id_check, ADIS16255_ID_STUCK_HIGH);
-    CHECK(!fx.drv.initialised);
+    CHECK(!fx.drv.ready);
     /* No part, MISO pulled down (stuck at 0). */
     fx_setup(false);
     sim_board_set_miso_pull(&fx.board, SIM_PULL_DOWN);
@@ -649,7 +651,7 @@ static void test_args(void)
     CHECK_ERR(adis16255_wait_sample(&fx.drv, 0, &s), INC_ERR_STATE);
     CHECK_ERR(adis16255_read_supply(&fx.drv, &q), INC_ERR_STATE);
     CHECK_ERR(adis16255_read_angle(&fx.drv, &q), INC_ERR_STATE);
-    CHECK_ERR(adis16255_read_status(&fx.drv, &st), INC_ERR_STATE);
+    CHECK_ERR(adis16255_read_diag(&fx.drv, &st), INC_ERR_STATE);
     CHECK_ERR(adis16255_autonull(&fx.drv), INC_ERR_STATE);
     CHECK_ERR(adis16255_flash_update(&fx.drv), INC_ERR_STATE);
     CHECK_ERR(adis16255_factory_restore(&fx.drv), INC_ERR_STATE);
@@ -665,7 +667,7 @@ static void test_args(void)
     CHECK_ERR(adis16255_wait_sample(&fx.drv, 0, NULL), INC_ERR_NULL);
     CHECK_ERR(adis16255_read_supply(&fx.drv, NULL), INC_ERR_NULL);
     CHECK_ERR(adis16255_read_angle(&fx.drv, NULL), INC_ERR_NULL);
-    CHECK_ERR(adis16255_read_status(&fx.drv, NULL), INC_ERR_NULL);
+    CHECK_ERR(adis16255_read_diag(&fx.drv, NULL), INC_ERR_NULL);
     CHECK_ERR(adis16255_get_gyro_offset(&fx.drv, NULL), INC_ERR_NULL);
     CHECK_ERR(adis16255_autonull(NULL), INC_ERR_NULL);
     CHECK_ERR(adis16255_self_test(NULL), INC_ERR_NULL);

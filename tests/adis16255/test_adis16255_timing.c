@@ -21,7 +21,7 @@ static void test_fast_sclk(void)
     REQUIRE(adis16255_init(&fx.drv, &fx.cfg) == 0);
     REQUIRE(fx.board.log.total == 0u);
     hal_delay_ms(&fx.board.hal, 4);
-    fx.drv.dev.cfg.timing.sclk_period_ns = 250; /* the bug: 4 MHz */
+    fx.drv.spi.cfg.timing.sclk_period_ns = 250; /* the bug: 4 MHz */
     (void)adis16255_read_sample(&fx.drv, &s);
 #ifdef EXPECT_FAIL
     CHECK_NO_VIOLATIONS();

@@ -9,6 +9,7 @@
  * QEMU it runs 2 s.
  */
 #include "fixture.h"
+#include "adis_imu_regs.h" /* white-box: the driver's register map */
 #include "unit.h"
 
 #include <math.h>
@@ -81,8 +82,8 @@ static void test_error_model_hook(void)
     REQUIRE(fx_init() == 0);
     fx_wait_ms(200); /* the filter settles on the biased input */
     CHECK_OK(adis_imu_dr_flush(&fx.imu));
-    CHECK_OK(adis_imu_wait_dr(&fx.imu, 0, NULL));
-    CHECK_OK(adis_imu_read_burst(&fx.imu, &s));
+    CHECK_OK(adis_imu_wait_ready(&fx.imu, 0, NULL));
+    CHECK_OK(adis_imu_read_sample(&fx.imu, &s));
     CHECK_EQ_INT(s.counts[ADIS_IMU_CH_GYRO_X], 14);  /* 0.7 / 0.05 */
     CHECK_EQ_INT(s.counts[ADIS_IMU_CH_GYRO_Y], -25); /* -1.23 / 0.05 = -24.6 */
     CHECK_EQ_INT(s.counts[ADIS_IMU_CH_GYRO_Z], 1);   /* 0.62 */
@@ -113,8 +114,8 @@ static void test_autonull(void)
     CHECK_EQ_INT(off[1], 98);
     /* The outputs read zero now. */
     CHECK_OK(adis_imu_dr_flush(&fx.imu));
-    CHECK_OK(adis_imu_wait_dr(&fx.imu, 0, NULL));
-    CHECK_OK(adis_imu_read_burst(&fx.imu, &s));
+    CHECK_OK(adis_imu_wait_ready(&fx.imu, 0, NULL));
+    CHECK_OK(adis_imu_read_sample(&fx.imu, &s));
     for (i = 0; i < 3u; i++) {
         CHECK_EQ_INT(s.counts[ADIS_IMU_CH_GYRO_X + i], 0);
     }
@@ -177,7 +178,7 @@ static void test_precision_autonull(void)
     CHECK_EQ_INT(off[2], -160);
     /* The part is back at its own SMPL_PRD. */
     CHECK_NEAR(sim_adis_imu_rate_sps(&fx.part), 1638.4 / 33.0, 1e-9);
-    CHECK_OK(adis_imu_wait_dr(&fx.imu, 0, NULL));
+    CHECK_OK(adis_imu_wait_ready(&fx.imu, 0, NULL));
     CHECK_EQ_INT(fx_violations(), 0);
 }
 
@@ -202,7 +203,7 @@ static void test_manual_calibration_100s(void)
     REQUIRE(fx_init() == 0);
     CHECK_OK(adis_imu_set_filter(&fx.imu, 0, ADIS_IMU_RANGE_300));
     for (k = 0; k < n; k++) {
-        if (adis_imu_wait_dr(&fx.imu, 0, &missed) != INC_OK ||
+        if (adis_imu_wait_ready(&fx.imu, 0, &missed) != INC_OK ||
             adis_imu_read_channels(&fx.imu, ADIS_IMU_CH_GYROS, &s) != INC_OK) {
             break;
         }

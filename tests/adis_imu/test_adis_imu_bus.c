@@ -127,9 +127,9 @@ static void bench_part(enum sim_adis_imu_variant v, const char *name, bool low_p
     }
     snprintf(label, sizeof(label), "%s%s", name, low_power ? " (low power)" : "");
 
-    CHECK_OK(adis_imu_wait_dr(&fx.imu, 0, NULL));
+    CHECK_OK(adis_imu_wait_ready(&fx.imu, 0, NULL));
     watch_start();
-    CHECK_OK(adis_imu_read_burst(&fx.imu, &s));
+    CHECK_OK(adis_imu_read_sample(&fx.imu, &s));
     t = watch_ns();
     CHECK_EQ_INT(w.periods, 1);
     CHECK_EQ_INT(
@@ -139,7 +139,7 @@ static void bench_part(enum sim_adis_imu_variant v, const char *name, bool low_p
     CHECK((double)t <= 1.10 * (double)m); /* the goal */
     row(label, "burst, 1 CS period", vi->burst_words + 1u, t, m);
 
-    CHECK_OK(adis_imu_wait_dr(&fx.imu, 0, NULL));
+    CHECK_OK(adis_imu_wait_ready(&fx.imu, 0, NULL));
     watch_start();
     CHECK_OK(adis_imu_read_channels(&fx.imu, set, &s));
     t = watch_ns();

@@ -7,9 +7,46 @@
  * 2 |q x den - num| <= den, and on a tie the magnitude rounds up - plus exact vectors.
  */
 #include "inclino/adis_imu.h"
+#include "adis_imu_regs.h" /* white-box: the driver's register map */
 #include "unit.h"
 
 #include <string.h>
+
+/* The fallible conversions, for inputs where they must succeed. */
+static int32_t gyro_dps(int32_t c, enum adis_imu_range r)
+{
+    int32_t v = 0;
+    CHECK_OK(adis_imu_gyro_dps_from_counts(c, r, &v));
+    return v;
+}
+
+static int32_t accel_g(int32_t c, uint32_t lsb_ug)
+{
+    int32_t v = 0;
+    CHECK_OK(adis_imu_accel_g_from_counts(c, lsb_ug, &v));
+    return v;
+}
+
+static int32_t temp_c(int32_t c, enum adis_imu_family f)
+{
+    int32_t v = 0;
+    CHECK_OK(adis_imu_temp_c_from_counts(c, f, &v));
+    return v;
+}
+
+static int32_t accel_off_to_g(int32_t c, uint32_t lsb_ug)
+{
+    int32_t v = 0;
+    CHECK_OK(adis_imu_accel_off_g_from_counts(c, lsb_ug, &v));
+    return v;
+}
+
+static int16_t accel_off_from_g(int32_t g, uint32_t lsb_ug, bool *sat)
+{
+    int16_t v = 0;
+    CHECK_OK(adis_imu_accel_off_counts_from_g(g, lsb_ug, &v, sat));
+    return v;
+}
 
 /* q is num/den rounded to nearest, ties away from zero (den > 0). */
 static bool rounds_exactly(int64_t q, int64_t num, int64_t den)
@@ -51,22 +88,31 @@ static void test_gyro_exhaustive(void)
     bad = 0;
     for (k = 0; k < 3u; k++) {
         for (c = -8192; c <= 8191; c++) {
-            expect_round(adis_imu_gyro_dps_q16(c, r[k]), (int64_t)c * 32768, den[k]);
+            expect_round(gyro_dps(c, r[k]), (int64_t)c * 32768, den[k]);
         }
     }
     CHECK_EQ_INT(bad, 0);
-    CHECK_EQ_INT(adis_imu_gyro_dps_q16(6000, ADIS_IMU_RANGE_300), 300 * 65536);
-    CHECK_EQ_INT(adis_imu_gyro_dps_q16(-6000, ADIS_IMU_RANGE_300), -300 * 65536);
-    CHECK_EQ_INT(adis_imu_gyro_dps_q16(6000, ADIS_IMU_RANGE_75), 75 * 65536);
-    CHECK_EQ_INT(adis_imu_gyro_dps_q16(-1, ADIS_IMU_RANGE_300), -3277);        /* -3276.8 */
-    CHECK_EQ_INT(adis_imu_gyro_dps_q16(1, ADIS_IMU_RANGE_150), 1638);          /* 1638.4 */
-    CHECK_EQ_INT(adis_imu_gyro_dps_q16(1, ADIS_IMU_RANGE_75), 819);            /* 819.2 */
-    CHECK_EQ_INT(adis_imu_gyro_dps_q16(-8192, ADIS_IMU_RANGE_300), -26843546); /* -409.6 */
-    CHECK_EQ_INT(adis_imu_gyro_dps_q16(5, ADIS_IMU_RANGE_300), 16384);         /* 0.25 exactly */
-    CHECK_EQ_INT(adis_imu_gyro_dps_q16(100, (enum adis_imu_range)3), 0);
+    CHECK_EQ_INT(gyro_dps(6000, ADIS_IMU_RANGE_300), 300 * 65536);
+    CHECK_EQ_INT(gyro_dps(-6000, ADIS_IMU_RANGE_300), -300 * 65536);
+    CHECK_EQ_INT(gyro_dps(6000, ADIS_IMU_RANGE_75), 75 * 65536);
+    CHECK_EQ_INT(gyro_dps(-1, ADIS_IMU_RANGE_300), -3277);        /* -3276.8 */
+    CHECK_EQ_INT(gyro_dps(1, ADIS_IMU_RANGE_150), 1638);          /* 1638.4 */
+    CHECK_EQ_INT(gyro_dps(1, ADIS_IMU_RANGE_75), 819);            /* 819.2 */
+    CHECK_EQ_INT(gyro_dps(-8192, ADIS_IMU_RANGE_300), -26843546); /* -409.6 */
+    CHECK_EQ_INT(gyro_dps(5, ADIS_IMU_RANGE_300), 16384);         /* 0.25 exactly */
+    {
+        int32_t v = 7;
+        CHECK_ERR(adis_imu_gyro_dps_from_counts(100, (enum adis_imu_range)3, &v), INC_ERR_INVAL);
+        CHECK_EQ_INT(v, 0); /* never a plausible value with an error */
+        CHECK_ERR(adis_imu_gyro_dps_from_counts(100, ADIS_IMU_RANGE_300, NULL), INC_ERR_NULL);
+        v = 7;
+        CHECK_ERR(adis_imu_temp_c_from_counts(0, (enum adis_imu_family)2, &v), INC_ERR_INVAL);
+        CHECK_EQ_INT(v, 0);
+        CHECK_ERR(adis_imu_temp_c_from_counts(0, ADIS_IMU_FAMILY_1636X, NULL), INC_ERR_NULL);
+    }
     /* Out-of-range input is clamped, never overflows. */
-    CHECK_EQ_INT(adis_imu_gyro_dps_q16(INT32_MAX, ADIS_IMU_RANGE_75), 65535 * 819 + 13107);
-    CHECK(adis_imu_gyro_dps_q16(INT32_MIN, ADIS_IMU_RANGE_300) < 0);
+    CHECK_EQ_INT(gyro_dps(INT32_MAX, ADIS_IMU_RANGE_75), 65535 * 819 + 13107);
+    CHECK(gyro_dps(INT32_MIN, ADIS_IMU_RANGE_300) < 0);
 }
 
 static void test_other_channels_exhaustive(void)
@@ -77,38 +123,44 @@ static void test_other_channels_exhaustive(void)
     bad = 0;
     for (k = 0; k < 3u; k++) {
         for (c = -8192; c <= 8191; c++) {
-            expect_round(adis_imu_accel_g_q16(c, lsbs[k]), (int64_t)c * lsbs[k] * 65536, 1000000);
+            expect_round(accel_g(c, lsbs[k]), (int64_t)c * lsbs[k] * 65536, 1000000);
         }
     }
     for (c = -2048; c <= 2047; c++) {
-        expect_round(adis_imu_temp_c_q16(c, ADIS_IMU_FAMILY_1636X),
-                     (25000 + (int64_t)c * 136) * 65536, 1000);
-        expect_round(adis_imu_temp_c_q16(c, ADIS_IMU_FAMILY_1640X),
-                     (25000 + (int64_t)c * 140) * 65536, 1000);
+        expect_round(temp_c(c, ADIS_IMU_FAMILY_1636X), (25000 + (int64_t)c * 136) * 65536, 1000);
+        expect_round(temp_c(c, ADIS_IMU_FAMILY_1640X), (25000 + (int64_t)c * 140) * 65536, 1000);
     }
     for (c = 0; c <= 16383; c++) {
-        expect_round(adis_imu_supply_v_q16(c), (int64_t)c * 2418 * 65536, 1000000);
+        expect_round(adis_imu_supply_v_from_counts(c), (int64_t)c * 2418 * 65536, 1000000);
     }
     for (c = -8192; c <= 8191; c++) {
-        expect_round(adis_imu_magn_gauss_q16(c), (int64_t)c * 65536, 2000);
+        expect_round(adis_imu_magn_gauss_from_counts(c), (int64_t)c * 65536, 2000);
     }
     for (c = 0; c <= 4095; c++) {
-        expect_round(adis_imu_aux_v_q16(c), (int64_t)c * 8058 * 65536, 10000000);
+        expect_round(adis_imu_aux_v_from_counts(c), (int64_t)c * 8058 * 65536, 10000000);
     }
     CHECK_EQ_INT(bad, 0);
     /* vectors */
-    CHECK_EQ_INT(adis_imu_accel_g_q16(300, 3333), 65529);  /* 0.9999 g = 65529.4 */
-    CHECK_EQ_INT(adis_imu_accel_g_q16(1000, 1000), 65536); /* 1 g exactly */
-    CHECK_EQ_INT(adis_imu_accel_g_q16(-1, 333), -22);      /* -21.82 */
-    CHECK_EQ_INT(adis_imu_accel_g_q16(1, 0), 0);
-    CHECK_EQ_INT(adis_imu_temp_c_q16(0, ADIS_IMU_FAMILY_1636X), 25 * 65536);
-    CHECK_EQ_INT(adis_imu_temp_c_q16(-2048, ADIS_IMU_FAMILY_1636X), -16615211); /* -253.528 C */
-    CHECK_EQ_INT(adis_imu_temp_c_q16(100, ADIS_IMU_FAMILY_1640X), 39 * 65536);  /* 25 + 14 */
-    CHECK_EQ_INT(adis_imu_supply_v_q16(0x814), 327708);                         /* 5.000424 V */
-    CHECK_EQ_INT(adis_imu_supply_v_q16(1964), 311227);  /* 4.748952 V = 311227.3 */
-    CHECK_EQ_INT(adis_imu_magn_gauss_q16(2000), 65536); /* 1 gauss */
-    CHECK_EQ_INT(adis_imu_magn_gauss_q16(-1), -33);     /* -32.768 */
-    CHECK_EQ_INT(adis_imu_aux_v_q16(4095), 216252);     /* 3.299751 V = 216252.48 */
+    CHECK_EQ_INT(accel_g(300, 3333), 65529);  /* 0.9999 g = 65529.4 */
+    CHECK_EQ_INT(accel_g(1000, 1000), 65536); /* 1 g exactly */
+    CHECK_EQ_INT(accel_g(-1, 333), -22);      /* -21.82 */
+    {
+        int32_t v = 7;
+        CHECK_ERR(adis_imu_accel_g_from_counts(1, 0, &v), INC_ERR_INVAL);
+        CHECK_EQ_INT(v, 0);
+        v = 7;
+        CHECK_ERR(adis_imu_accel_g_from_counts(1, 100001u, &v), INC_ERR_INVAL);
+        CHECK_EQ_INT(v, 0);
+        CHECK_ERR(adis_imu_accel_g_from_counts(1, 1000u, NULL), INC_ERR_NULL);
+    }
+    CHECK_EQ_INT(temp_c(0, ADIS_IMU_FAMILY_1636X), 25 * 65536);
+    CHECK_EQ_INT(temp_c(-2048, ADIS_IMU_FAMILY_1636X), -16615211); /* -253.528 C */
+    CHECK_EQ_INT(temp_c(100, ADIS_IMU_FAMILY_1640X), 39 * 65536);  /* 25 + 14 */
+    CHECK_EQ_INT(adis_imu_supply_v_from_counts(0x814), 327708);    /* 5.000424 V */
+    CHECK_EQ_INT(adis_imu_supply_v_from_counts(1964), 311227);     /* 4.748952 V = 311227.3 */
+    CHECK_EQ_INT(adis_imu_magn_gauss_from_counts(2000), 65536);    /* 1 gauss */
+    CHECK_EQ_INT(adis_imu_magn_gauss_from_counts(-1), -33);        /* -32.768 */
+    CHECK_EQ_INT(adis_imu_aux_v_from_counts(4095), 216252);        /* 3.299751 V = 216252.48 */
 }
 
 static void test_gyro_offsets(void)
@@ -118,12 +170,12 @@ static void test_gyro_offsets(void)
     bad = 0;
     /* to deg/s: exhaustive over the 13-bit register */
     for (c = -4096; c <= 4095; c++) {
-        expect_round(adis_imu_gyro_off_to_dps_q16(c), (int64_t)c * 65536, 80);
+        expect_round(adis_imu_gyro_off_dps_from_counts(c), (int64_t)c * 65536, 80);
     }
     /* from deg/s: every Q16.16 value within the register range and beyond it (every 61st under
      * QEMU, where 64-bit divisions are slow) */
     for (q = -3500000; q <= 3500000; q += Q_STEP) {
-        const int16_t o = adis_imu_gyro_off_from_dps_q16(q, &sat);
+        const int16_t o = adis_imu_gyro_off_counts_from_dps(q, &sat);
         const int64_t num = (int64_t)q * 80;
         if (o > -4096 && o < 4095) {
             expect_round(o, num, 65536);
@@ -140,22 +192,22 @@ static void test_gyro_offsets(void)
         }
     }
     CHECK_EQ_INT(bad, 0);
-    CHECK_EQ_INT(adis_imu_gyro_off_from_dps_q16(65536, &sat), 80); /* 1 deg/s x 80 */
+    CHECK_EQ_INT(adis_imu_gyro_off_counts_from_dps(65536, &sat), 80); /* 1 deg/s x 80 */
     CHECK(!sat);
-    CHECK_EQ_INT(adis_imu_gyro_off_from_dps_q16(2048, NULL), 3);   /* 2.5 -> 3 (tie) */
-    CHECK_EQ_INT(adis_imu_gyro_off_from_dps_q16(-2048, NULL), -3); /* -2.5 -> -3 */
-    CHECK_EQ_INT(adis_imu_gyro_off_from_dps_q16(2047, NULL), 2);
-    CHECK_EQ_INT(adis_imu_gyro_off_from_dps_q16(-3355443, &sat), -4096); /* -51.2 deg/s */
+    CHECK_EQ_INT(adis_imu_gyro_off_counts_from_dps(2048, NULL), 3);   /* 2.5 -> 3 (tie) */
+    CHECK_EQ_INT(adis_imu_gyro_off_counts_from_dps(-2048, NULL), -3); /* -2.5 -> -3 */
+    CHECK_EQ_INT(adis_imu_gyro_off_counts_from_dps(2047, NULL), 2);
+    CHECK_EQ_INT(adis_imu_gyro_off_counts_from_dps(-3355443, &sat), -4096); /* -51.2 deg/s */
     CHECK(!sat);
-    CHECK_EQ_INT(adis_imu_gyro_off_from_dps_q16(3355443, &sat), 4095); /* +51.2: clipped */
+    CHECK_EQ_INT(adis_imu_gyro_off_counts_from_dps(3355443, &sat), 4095); /* +51.2: clipped */
     CHECK(sat);
-    CHECK_EQ_INT(adis_imu_gyro_off_from_dps_q16(INT32_MAX, &sat), 4095);
+    CHECK_EQ_INT(adis_imu_gyro_off_counts_from_dps(INT32_MAX, &sat), 4095);
     CHECK(sat);
-    CHECK_EQ_INT(adis_imu_gyro_off_from_dps_q16(INT32_MIN, &sat), -4096);
+    CHECK_EQ_INT(adis_imu_gyro_off_counts_from_dps(INT32_MIN, &sat), -4096);
     CHECK(sat);
-    CHECK_EQ_INT(adis_imu_gyro_off_to_dps_q16(80), 65536);
-    CHECK_EQ_INT(adis_imu_gyro_off_to_dps_q16(-1), -819);               /* -0.0125 = -819.2 */
-    CHECK_EQ_INT(adis_imu_gyro_off_to_dps_q16(9999), 4095 * 8192 / 10); /* saturated first */
+    CHECK_EQ_INT(adis_imu_gyro_off_dps_from_counts(80), 65536);
+    CHECK_EQ_INT(adis_imu_gyro_off_dps_from_counts(-1), -819);               /* -0.0125 = -819.2 */
+    CHECK_EQ_INT(adis_imu_gyro_off_dps_from_counts(9999), 4095 * 8192 / 10); /* saturated first */
 }
 
 static void test_accel_offsets(void)
@@ -164,26 +216,32 @@ static void test_accel_offsets(void)
     int32_t c;
     bad = 0;
     for (c = -2048; c <= 2047; c++) {
-        expect_round(adis_imu_accel_off_to_g_q16(c, 3333), (int64_t)c * 3333 * 65536, 1000000);
-        expect_round(adis_imu_accel_off_from_g_q16(adis_imu_accel_off_to_g_q16(c, 333), 333, &sat) -
-                         c,
-                     0, 1);
+        expect_round(accel_off_to_g(c, 3333), (int64_t)c * 3333 * 65536, 1000000);
+        expect_round(accel_off_from_g(accel_off_to_g(c, 333), 333, &sat) - c, 0, 1);
         if (sat && bad++ < 5u) {
             CHECK(!sat);
         }
     }
     CHECK_EQ_INT(bad, 0);
-    CHECK_EQ_INT(adis_imu_accel_off_from_g_q16(65536, 1000, &sat), 1000); /* 1 g at 1 mg */
+    CHECK_EQ_INT(accel_off_from_g(65536, 1000, &sat), 1000); /* 1 g at 1 mg */
     CHECK(!sat);
-    CHECK_EQ_INT(adis_imu_accel_off_from_g_q16(-65536, 3333, &sat), -300); /* -300.03 */
-    CHECK_EQ_INT(adis_imu_accel_off_from_g_q16(3 * 65536, 1000, &sat), 2047);
+    CHECK_EQ_INT(accel_off_from_g(-65536, 3333, &sat), -300); /* -300.03 */
+    CHECK_EQ_INT(accel_off_from_g(3 * 65536, 1000, &sat), 2047);
     CHECK(sat);
-    CHECK_EQ_INT(adis_imu_accel_off_from_g_q16(-3 * 65536, 1000, &sat), -2048);
+    CHECK_EQ_INT(accel_off_from_g(-3 * 65536, 1000, &sat), -2048);
     CHECK(sat);
-    CHECK_EQ_INT(adis_imu_accel_off_from_g_q16(65536, 0, &sat), 0);
-    CHECK(sat);
-    CHECK_EQ_INT(adis_imu_accel_off_to_g_q16(1000, 1000), 65536);
-    CHECK_EQ_INT(adis_imu_accel_off_to_g_q16(1, 200000), 0);
+    {
+        int16_t o = 7;
+        int32_t g = 7;
+        CHECK_ERR(adis_imu_accel_off_counts_from_g(65536, 0, &o, &sat), INC_ERR_INVAL);
+        CHECK_EQ_INT(o, 0);
+        CHECK(!sat);
+        CHECK_ERR(adis_imu_accel_off_counts_from_g(65536, 1000, NULL, &sat), INC_ERR_NULL);
+        CHECK_EQ_INT(accel_off_to_g(1000, 1000), 65536);
+        CHECK_ERR(adis_imu_accel_off_g_from_counts(1, 200000, &g), INC_ERR_INVAL);
+        CHECK_EQ_INT(g, 0);
+        CHECK_ERR(adis_imu_accel_off_g_from_counts(1, 1000, NULL), INC_ERR_NULL);
+    }
 }
 
 static void test_sample_rate(void)

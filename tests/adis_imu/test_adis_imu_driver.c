@@ -6,6 +6,7 @@
  * the datasheet scales (docs/sensor-facts.md §3.3), not taken from the model.
  */
 #include "fixture.h"
+#include "adis_imu_regs.h" /* white-box: the driver's register map */
 #include "unit.h"
 
 #include <stdio.h>
@@ -125,8 +126,8 @@ static void test_init_each_variant(void)
         CHECK_EQ_HEX(fx.imu.smpl_prd, 0x0001u);
         CHECK_EQ_HEX(fx.imu.sens_avg, 0x0402u);
         CHECK_EQ_HEX(fx.imu.msc_ctrl, 0x0006u);
-        CHECK_EQ_INT(fx.imu.dev.cfg.timing.sclk_period_ns, 500);
-        CHECK_EQ_INT(fx.imu.dev.cfg.timing.stall_ns, ADIS_IMU_STALL_NORMAL_NS);
+        CHECK_EQ_INT(fx.imu.spi.cfg.timing.sclk_period_ns, 500);
+        CHECK_EQ_INT(fx.imu.spi.cfg.timing.stall_ns, ADIS_IMU_STALL_NORMAL_NS);
         CHECK_EQ_INT(fx_violations(), 0);
     }
     /* ANY accepts the part and says which one it is; reset and self-test at init. */
@@ -152,7 +153,7 @@ static void test_wrong_prod_id(void)
     CHECK_EQ_HEX(id, 0x4015);
     CHECK_EQ_INT(found, ADIS_IMU_ADIS16405);
     CHECK(strcmp(adis_imu_variant_name(found), "ADIS16405") == 0);
-    CHECK_ERR(adis_imu_read_burst(&fx.imu, &s), INC_ERR_STATE); /* no use after a failed init */
+    CHECK_ERR(adis_imu_read_sample(&fx.imu, &s), INC_ERR_STATE); /* no use after a failed init */
     /* A PROD_ID of no known part: reported as found, named "unknown". */
     fx_setup(SIM_ADIS16364);
     fx.part.reg[0x56 >> 1] = 0x3FEF; /* ADIS16367, not supported */
@@ -204,12 +205,12 @@ static void test_burst_exact_each_variant(void)
         struct adis_imu_sample s;
         setup_input1((enum sim_adis_imu_variant)v);
         REQUIRE(fx_init() == 0);
-        CHECK_OK(adis_imu_wait_dr(&fx.imu, 0, NULL));
-        CHECK_OK(adis_imu_read_burst(&fx.imu, &s));
+        CHECK_OK(adis_imu_wait_ready(&fx.imu, 0, NULL));
+        CHECK_OK(adis_imu_read_sample(&fx.imu, &s));
         check_sample1((enum sim_adis_imu_variant)v, &s);
         CHECK_EQ_INT(fx.part.core.bursts, 1);
         /* the device timing is back to normal mode after the burst */
-        CHECK_EQ_INT(fx.imu.dev.cfg.timing.sclk_period_ns, 500);
+        CHECK_EQ_INT(fx.imu.spi.cfg.timing.sclk_period_ns, 500);
         CHECK_EQ_INT(fx_violations(), 0);
     }
 }
@@ -221,12 +222,12 @@ static void test_registers_exact_each_variant(void)
         struct adis_imu_sample s;
         setup_input1((enum sim_adis_imu_variant)v);
         REQUIRE(fx_init() == 0);
-        CHECK_OK(adis_imu_wait_dr(&fx.imu, 0, NULL));
+        CHECK_OK(adis_imu_wait_ready(&fx.imu, 0, NULL));
         CHECK_OK(adis_imu_read_channels(&fx.imu, ADIS_IMU_CH_ALL, &s));
         check_sample1((enum sim_adis_imu_variant)v, &s);
         CHECK_EQ_INT(fx.part.core.bursts, 0);
         /* a subset: only what was asked is present */
-        CHECK_OK(adis_imu_wait_dr(&fx.imu, 0, NULL));
+        CHECK_OK(adis_imu_wait_ready(&fx.imu, 0, NULL));
         CHECK_OK(adis_imu_read_channels(&fx.imu, ADIS_IMU_CH_GYROS, &s));
         CHECK_EQ_HEX(s.present, ADIS_IMU_CH_GYROS);
         CHECK_EQ_INT(s.counts[ADIS_IMU_CH_GYRO_Z], 2469);
@@ -241,24 +242,24 @@ static void test_stale(void)
     struct adis_imu_phys p;
     setup_input1(SIM_ADIS16400);
     REQUIRE(fx_init() == 0);
-    CHECK_OK(adis_imu_wait_dr(&fx.imu, 0, NULL));
-    CHECK_OK(adis_imu_read_burst(&fx.imu, &s));
+    CHECK_OK(adis_imu_wait_ready(&fx.imu, 0, NULL));
+    CHECK_OK(adis_imu_read_sample(&fx.imu, &s));
     /* Again before the next sample: ND is clear in every word. */
-    CHECK_ERR(adis_imu_read_burst(&fx.imu, &s), INC_ERR_STALE);
+    CHECK_ERR(adis_imu_read_sample(&fx.imu, &s), INC_ERR_STALE);
     CHECK_EQ_HEX(s.valid, 0);
     CHECK_EQ_HEX(s.stale, s.present);
     CHECK_EQ_INT(s.counts[ADIS_IMU_CH_GYRO_X], 200); /* the data is there, but not valid */
     CHECK_OK(adis_imu_to_phys(&fx.imu, &s, &p));
     CHECK_EQ_INT(p.gyro_dps[0], 0); /* ...and never converted */
     /* Non-burst: one stale channel among fresh ones is flagged alone. */
-    CHECK_OK(adis_imu_wait_dr(&fx.imu, 0, NULL));
+    CHECK_OK(adis_imu_wait_ready(&fx.imu, 0, NULL));
     CHECK_OK(adis_imu_read_channels(&fx.imu, ADIS_IMU_CH(ADIS_IMU_CH_GYRO_X), &s));
     CHECK_ERR(adis_imu_read_channels(&fx.imu, ADIS_IMU_CH_GYROS, &s), INC_ERR_STALE);
     CHECK_EQ_HEX(s.stale, ADIS_IMU_CH(ADIS_IMU_CH_GYRO_X));
     CHECK_EQ_HEX(s.valid, ADIS_IMU_CH(ADIS_IMU_CH_GYRO_Y) | ADIS_IMU_CH(ADIS_IMU_CH_GYRO_Z));
     /* Still gyros read twice at zero rate: equal 0x0000 words, yet a live part -> stale. */
     fx_set_input_settled(&(struct sim_inertial_input){{0, 0, 0}, {0, 0, 1}, 25.0, 5.0});
-    CHECK_OK(adis_imu_wait_dr(&fx.imu, 0, NULL));
+    CHECK_OK(adis_imu_wait_ready(&fx.imu, 0, NULL));
     CHECK_OK(adis_imu_read_channels(&fx.imu, ADIS_IMU_CH_GYROS, &s));
     CHECK_ERR(adis_imu_read_channels(&fx.imu, ADIS_IMU_CH_GYROS, &s), INC_ERR_STALE);
     CHECK_EQ_HEX(s.raw[ADIS_IMU_CH_GYRO_X], 0x0000);
@@ -275,32 +276,32 @@ static void test_error_flags(void)
     REQUIRE(fx_init() == 0);
     /* An alarm: EA in every word, DIAG_STAT read, decoded, no value valid. */
     sim_adis_imu_raise_diag(&fx.part, 0x0100u);
-    CHECK_OK(adis_imu_wait_dr(&fx.imu, 0, NULL));
-    CHECK_ERR(adis_imu_read_burst(&fx.imu, &s), INC_ERR_DEVICE);
+    CHECK_OK(adis_imu_wait_ready(&fx.imu, 0, NULL));
+    CHECK_ERR(adis_imu_read_sample(&fx.imu, &s), INC_ERR_DEVICE);
     CHECK_EQ_HEX(s.diag, 0x0100);
     CHECK_EQ_HEX(s.valid, 0);
     CHECK(s.raw[ADIS_IMU_CH_GYRO_X] & ADIS_FLAG_EA);
     adis_imu_diag_decode(s.diag, &d);
     CHECK(d.alarm1 && d.any && !d.alarm2 && !d.spi_fail);
     /* DIAG_STAT cleared on read: the next sample is clean. */
-    CHECK_OK(adis_imu_wait_dr(&fx.imu, 0, NULL));
-    CHECK_OK(adis_imu_read_burst(&fx.imu, &s));
+    CHECK_OK(adis_imu_wait_ready(&fx.imu, 0, NULL));
+    CHECK_OK(adis_imu_read_sample(&fx.imu, &s));
     /* Supply below 4.75 V: the condition persists, so does the error. */
     input1(&in);
     in.supply_v = 4.6;
     sim_adis_imu_set_input(&fx.part, &in);
-    CHECK_OK(adis_imu_wait_dr(&fx.imu, 0, NULL));
+    CHECK_OK(adis_imu_wait_ready(&fx.imu, 0, NULL));
     CHECK_ERR(adis_imu_read_channels(&fx.imu, ADIS_IMU_CH_ALL, &s), INC_ERR_DEVICE);
     CHECK_EQ_HEX(s.diag, 0x0001);
-    CHECK_OK(adis_imu_wait_dr(&fx.imu, 0, NULL));
-    CHECK_ERR(adis_imu_read_burst(&fx.imu, &s), INC_ERR_DEVICE);
+    CHECK_OK(adis_imu_wait_ready(&fx.imu, 0, NULL));
+    CHECK_ERR(adis_imu_read_sample(&fx.imu, &s), INC_ERR_DEVICE);
     adis_imu_diag_decode(s.diag, &d);
     CHECK(d.supply_low);
     /* Over range: 400 deg/s clips at 6000 counts and raises DIAG_STAT[4]. */
     input1(&in);
     in.rate_dps[0] = 400.0;
     fx_set_input_settled(&in);
-    CHECK_ERR(adis_imu_read_burst(&fx.imu, &s), INC_ERR_DEVICE);
+    CHECK_ERR(adis_imu_read_sample(&fx.imu, &s), INC_ERR_DEVICE);
     CHECK_EQ_HEX(s.diag, 0x0010);
     CHECK_EQ_INT(s.counts[ADIS_IMU_CH_GYRO_X], 6000);
     CHECK_EQ_INT(fx.imu.device_errors, 4);
@@ -323,7 +324,7 @@ static void test_spi_failure_reported(void)
     CHECK_EQ_INT(sim_violation_count(&fx.board.log, SIM_VIOL_PARTIAL_WORD), 1);
     CHECK_EQ_INT(fx.board.log.total, 1);
     fx_wait_ms(1);
-    CHECK_ERR(adis_imu_read_burst(&fx.imu, &s), INC_ERR_DEVICE);
+    CHECK_ERR(adis_imu_read_sample(&fx.imu, &s), INC_ERR_DEVICE);
     adis_imu_diag_decode(s.diag, &d);
     CHECK(d.spi_fail);
     CHECK_EQ_HEX(fx.imu.last_diag, ADIS_IMU_DIAG_SPI_FAIL);
@@ -335,17 +336,17 @@ static void test_bus_stuck_at_run_time(void)
     struct adis_imu_sample s;
     setup_input1(SIM_ADIS16400);
     REQUIRE(fx_init() == 0);
-    CHECK_OK(adis_imu_wait_dr(&fx.imu, 0, NULL));
-    CHECK_OK(adis_imu_read_burst(&fx.imu, &s));
+    CHECK_OK(adis_imu_wait_ready(&fx.imu, 0, NULL));
+    CHECK_OK(adis_imu_read_sample(&fx.imu, &s));
     /* The part drops off the bus: MISO floats high. */
     sim_spi_slave_detach(&fx.part.core.slave);
-    CHECK_ERR(adis_imu_read_burst(&fx.imu, &s), INC_ERR_BUS);
+    CHECK_ERR(adis_imu_read_sample(&fx.imu, &s), INC_ERR_BUS);
     CHECK_EQ_HEX(s.valid, 0);
     CHECK_ERR(adis_imu_read_channels(&fx.imu, ADIS_IMU_CH_GYROS, &s), INC_ERR_BUS);
     CHECK_ERR(adis_imu_read_channels(&fx.imu, ADIS_IMU_CH(ADIS_IMU_CH_GYRO_Z), &s), INC_ERR_BUS);
     /* MISO stuck low. */
     CHECK_OK(sim_board_set_miso_pull(&fx.board, SIM_PULL_DOWN));
-    CHECK_ERR(adis_imu_read_burst(&fx.imu, &s), INC_ERR_BUS);
+    CHECK_ERR(adis_imu_read_sample(&fx.imu, &s), INC_ERR_BUS);
     CHECK_ERR(adis_imu_read_channels(&fx.imu, ADIS_IMU_CH_ALL, &s), INC_ERR_BUS);
     CHECK_ERR(adis_imu_read_channels(&fx.imu, ADIS_IMU_CH(ADIS_IMU_CH_SUPPLY), &s), INC_ERR_BUS);
     CHECK_EQ_HEX(s.valid, 0);
@@ -364,14 +365,14 @@ static void test_sample_period_and_sclk(void)
     CHECK_OK(adis_imu_set_sample_period(&fx.imu, 0x0A));
     CHECK(fx.imu.low_power);
     CHECK(fx.part.low_power);
-    CHECK_EQ_INT(fx.imu.dev.cfg.timing.sclk_period_ns, 3334);
-    CHECK_EQ_INT(fx.imu.dev.cfg.timing.stall_ns, ADIS_IMU_STALL_LOW_POWER_NS);
+    CHECK_EQ_INT(fx.imu.spi.cfg.timing.sclk_period_ns, 3334);
+    CHECK_EQ_INT(fx.imu.spi.cfg.timing.stall_ns, ADIS_IMU_STALL_LOW_POWER_NS);
     CHECK_EQ_INT(adis_imu_current_period_ns(&fx.imu), 6713867); /* 11 x 610351.5625 */
-    CHECK_OK(adis_imu_wait_dr(&fx.imu, 0, NULL));
+    CHECK_OK(adis_imu_wait_ready(&fx.imu, 0, NULL));
     t0 = fx.board.clk.now_ns;
-    CHECK_OK(adis_imu_read_burst(&fx.imu, &s));
+    CHECK_OK(adis_imu_read_sample(&fx.imu, &s));
     CHECK_EQ_INT(s.counts[ADIS_IMU_CH_GYRO_X], 200);
-    CHECK_OK(adis_imu_wait_dr(&fx.imu, 0, NULL));
+    CHECK_OK(adis_imu_wait_ready(&fx.imu, 0, NULL));
     t1 = fx.board.clk.now_ns;
     CHECK_NEAR_INT(t1 - t0, 6713867, 1);
     CHECK_OK(adis_imu_read_channels(&fx.imu, ADIS_IMU_CH_ALL, &s));
@@ -379,14 +380,14 @@ static void test_sample_period_and_sclk(void)
     CHECK_OK(adis_imu_set_sample_period(&fx.imu, 0x81));
     CHECK(fx.imu.low_power);
     CHECK_EQ_INT(adis_imu_current_period_ns(&fx.imu), 37841797); /* 62 x tB */
-    CHECK_OK(adis_imu_wait_dr(&fx.imu, 0, NULL));
-    CHECK_OK(adis_imu_read_burst(&fx.imu, &s));
+    CHECK_OK(adis_imu_wait_ready(&fx.imu, 0, NULL));
+    CHECK_OK(adis_imu_read_sample(&fx.imu, &s));
     /* Back to normal mode at the boundary 0x09 (163.84 SPS). */
     CHECK_OK(adis_imu_set_sample_period(&fx.imu, 0x09));
     CHECK(!fx.imu.low_power);
     CHECK(!fx.part.low_power);
-    CHECK_EQ_INT(fx.imu.dev.cfg.timing.sclk_period_ns, 500);
-    CHECK_OK(adis_imu_wait_dr(&fx.imu, 0, NULL));
+    CHECK_EQ_INT(fx.imu.spi.cfg.timing.sclk_period_ns, 500);
+    CHECK_OK(adis_imu_wait_ready(&fx.imu, 0, NULL));
     CHECK_OK(adis_imu_read_channels(&fx.imu, ADIS_IMU_CH_ALL, &s));
     CHECK_NEAR(sim_adis_imu_rate_sps(&fx.part), 163.84, 1e-9);
     CHECK_EQ_INT(fx_violations(), 0);
@@ -423,22 +424,22 @@ static void test_filter_and_range(void)
     REQUIRE(fx_init() == 0);
     sim_inertial_at_rest(&in);
     fx_set_input_settled(&in);
-    CHECK_OK(adis_imu_wait_dr(&fx.imu, 0, NULL));
+    CHECK_OK(adis_imu_wait_ready(&fx.imu, 0, NULL));
     in.rate_dps[0] = 8.0;
     sim_adis_imu_set_input(&fx.part, &in);
     for (k = 0; k < 8u; k++) {
-        CHECK_OK(adis_imu_wait_dr(&fx.imu, 0, NULL));
-        CHECK_OK(adis_imu_read_burst(&fx.imu, &s));
+        CHECK_OK(adis_imu_wait_ready(&fx.imu, 0, NULL));
+        CHECK_OK(adis_imu_read_sample(&fx.imu, &s));
         CHECK_EQ_INT(s.counts[ADIS_IMU_CH_GYRO_X], step[k]);
     }
     /* M = 0: no filter, the step passes in one sample. */
     CHECK_OK(adis_imu_set_filter(&fx.imu, 0, ADIS_IMU_RANGE_300));
     CHECK_EQ_HEX(fx.part.reg[0x38 >> 1], 0x0400);
     in.rate_dps[0] = -3.0;
-    CHECK_OK(adis_imu_wait_dr(&fx.imu, 0, NULL));
+    CHECK_OK(adis_imu_wait_ready(&fx.imu, 0, NULL));
     sim_adis_imu_set_input(&fx.part, &in);
-    CHECK_OK(adis_imu_wait_dr(&fx.imu, 0, NULL));
-    CHECK_OK(adis_imu_read_burst(&fx.imu, &s));
+    CHECK_OK(adis_imu_wait_ready(&fx.imu, 0, NULL));
+    CHECK_OK(adis_imu_read_sample(&fx.imu, &s));
     CHECK_EQ_INT(s.counts[ADIS_IMU_CH_GYRO_X], -60);
     /* +-75 deg/s needs M >= 4 [U]: LSB 0.0125, so -3 deg/s is -240 counts. */
     CHECK_ERR(adis_imu_set_filter(&fx.imu, 3, ADIS_IMU_RANGE_75), INC_ERR_INVAL);
@@ -446,7 +447,7 @@ static void test_filter_and_range(void)
     CHECK_EQ_HEX(fx.part.reg[0x38 >> 1], 0x0104);
     CHECK_EQ_INT(adis_imu_gyro_range(&fx.imu), ADIS_IMU_RANGE_75);
     fx_set_input_settled(&in);
-    CHECK_OK(adis_imu_read_burst(&fx.imu, &s));
+    CHECK_OK(adis_imu_read_sample(&fx.imu, &s));
     CHECK_EQ_INT(s.counts[ADIS_IMU_CH_GYRO_X], -240);
     CHECK_OK(adis_imu_to_phys(&fx.imu, &s, &p));
     CHECK_EQ_INT(p.gyro_dps[0], -3 * 65536);
@@ -455,7 +456,7 @@ static void test_filter_and_range(void)
     CHECK_OK(adis_imu_set_filter(&fx.imu, 2, ADIS_IMU_RANGE_150));
     CHECK_EQ_HEX(fx.part.reg[0x38 >> 1], 0x0202);
     fx_set_input_settled(&in);
-    CHECK_OK(adis_imu_read_burst(&fx.imu, &s));
+    CHECK_OK(adis_imu_read_sample(&fx.imu, &s));
     CHECK_EQ_INT(s.counts[ADIS_IMU_CH_GYRO_X], -120);
     /* a sample keeps the scale it was read with: converted after another range change */
     CHECK_OK(adis_imu_set_filter(&fx.imu, 4, ADIS_IMU_RANGE_75));
@@ -493,7 +494,7 @@ static void test_flash_update_restore_reset(void)
     CHECK_OK(adis_imu_get_gyro_offset(&fx.imu, 1, &off));
     CHECK_EQ_INT(off, -123);
     /* Data-ready is put back as configured (here it was stored enabled anyway). */
-    CHECK_OK(adis_imu_wait_dr(&fx.imu, 0, NULL));
+    CHECK_OK(adis_imu_wait_ready(&fx.imu, 0, NULL));
     /* Factory restore: offsets to zero. */
     CHECK_OK(adis_imu_command(&fx.imu, ADIS_IMU_CMD_FACTORY_RESTORE));
     CHECK_OK(adis_imu_get_gyro_offset(&fx.imu, 1, &off));
@@ -566,10 +567,10 @@ static void test_offsets(void)
     /* Effect on the output (offset adds [U]): +80 LSB = +1 deg/s = +20 output counts. */
     CHECK_OK(adis_imu_set_gyro_offset(&fx.imu, 0, 80));
     CHECK_OK(
-        adis_imu_set_gyro_offset(&fx.imu, 1, adis_imu_gyro_off_from_dps_q16(-65536 / 2, NULL)));
+        adis_imu_set_gyro_offset(&fx.imu, 1, adis_imu_gyro_off_counts_from_dps(-65536 / 2, NULL)));
     CHECK_OK(adis_imu_dr_flush(&fx.imu)); /* a sample taken with the new offsets */
-    CHECK_OK(adis_imu_wait_dr(&fx.imu, 0, NULL));
-    CHECK_OK(adis_imu_read_burst(&fx.imu, &s));
+    CHECK_OK(adis_imu_wait_ready(&fx.imu, 0, NULL));
+    CHECK_OK(adis_imu_read_sample(&fx.imu, &s));
     CHECK_EQ_INT(s.counts[ADIS_IMU_CH_GYRO_X], 20);
     CHECK_EQ_INT(s.counts[ADIS_IMU_CH_GYRO_Y], -10);
     CHECK_EQ_INT(s.counts[ADIS_IMU_CH_GYRO_Z], -4096 / 4); /* -51.2 deg/s */
@@ -580,8 +581,8 @@ static void test_offsets(void)
     CHECK_ERR(adis_imu_set_accel_offset(&fx.imu, 0, 2048), INC_ERR_RANGE);
     CHECK_OK(adis_imu_set_accel_offset(&fx.imu, 2, 25));
     CHECK_OK(adis_imu_dr_flush(&fx.imu));
-    CHECK_OK(adis_imu_wait_dr(&fx.imu, 0, NULL));
-    CHECK_OK(adis_imu_read_burst(&fx.imu, &s));
+    CHECK_OK(adis_imu_wait_ready(&fx.imu, 0, NULL));
+    CHECK_OK(adis_imu_read_sample(&fx.imu, &s));
     CHECK_EQ_INT(s.counts[ADIS_IMU_CH_ACCEL_X], -2048);
     CHECK_EQ_INT(s.counts[ADIS_IMU_CH_ACCEL_Z], 1025);
     CHECK_EQ_INT(fx_violations(), 0);
@@ -602,37 +603,37 @@ static void test_data_ready(void)
     fx.cfg.dr_active_low = true;
     REQUIRE(fx_init() == 0);
     CHECK_EQ_HEX(fx.part.reg[0x34 >> 1], 0x0005);
-    CHECK_OK(adis_imu_wait_dr(&fx.imu, 0, &missed));
+    CHECK_OK(adis_imu_wait_ready(&fx.imu, 0, &missed));
     t0 = fx.board.clk.now_ns;
     for (k = 0; k < 10u; k++) {
-        CHECK_OK(adis_imu_wait_dr(&fx.imu, 0, &missed));
+        CHECK_OK(adis_imu_wait_ready(&fx.imu, 0, &missed));
         CHECK_EQ_INT(missed, 0);
         /* one edge per sample period (1220703.125 ns) */
         CHECK_NEAR_INT(fx.board.clk.now_ns - t0, 1220703, 1);
         t0 = fx.board.clk.now_ns;
-        CHECK_OK(adis_imu_read_burst(&fx.imu, &s));
+        CHECK_OK(adis_imu_read_sample(&fx.imu, &s));
     }
     /* Samples not read are counted. */
     fx_wait_ms(5);
-    CHECK_OK(adis_imu_wait_dr(&fx.imu, 0, &missed));
+    CHECK_OK(adis_imu_wait_ready(&fx.imu, 0, &missed));
     CHECK_EQ_INT(missed, 3); /* 5 ms = 4 samples: one consumed, three missed */
     /* DR wired to the wrong line: the edge never comes -> timeout, not a stale read. */
     fx_setup(SIM_ADIS16362);
     fx.cfg.dr_pin = SIM_BOARD_DR(1); /* but the part drives DIO1 = dr0 */
     REQUIRE(fx_init() == 0);
-    CHECK_ERR(adis_imu_wait_dr(&fx.imu, 0, NULL), INC_ERR_TIMEOUT);
-    CHECK_ERR(adis_imu_wait_dr(&fx.imu, 10000000u, NULL), INC_ERR_TIMEOUT);
+    CHECK_ERR(adis_imu_wait_ready(&fx.imu, 0, NULL), INC_ERR_TIMEOUT);
+    CHECK_ERR(adis_imu_wait_ready(&fx.imu, 10000000u, NULL), INC_ERR_TIMEOUT);
     CHECK_EQ_INT(fx.imu.timeouts, 2);
     /* The part stops data-ready (MSC_CTRL[2] cleared elsewhere): missed data-ready. */
     fx_setup(SIM_ADIS16362);
     REQUIRE(fx_init() == 0);
-    CHECK_OK(adis_imu_wait_dr(&fx.imu, 0, NULL));
+    CHECK_OK(adis_imu_wait_ready(&fx.imu, 0, NULL));
     sim_adis_imu_poke(&fx.part, 0x34, 0x0002);
-    CHECK_ERR(adis_imu_wait_dr(&fx.imu, 0, NULL), INC_ERR_TIMEOUT);
+    CHECK_ERR(adis_imu_wait_ready(&fx.imu, 0, NULL), INC_ERR_TIMEOUT);
     /* Disabled in the driver: waiting is refused. */
     CHECK_OK(adis_imu_dr_config(&fx.imu, false, ADIS_IMU_DR_DIO1, false));
     CHECK_EQ_HEX(fx.part.reg[0x34 >> 1], 0x0000);
-    CHECK_ERR(adis_imu_wait_dr(&fx.imu, 0, NULL), INC_ERR_STATE);
+    CHECK_ERR(adis_imu_wait_ready(&fx.imu, 0, NULL), INC_ERR_STATE);
     CHECK_EQ_INT(fx_violations(), 0);
 }
 
@@ -690,15 +691,15 @@ static void test_registers_and_arguments(void)
     CHECK_ERR(adis_imu_found(&s0, &v, NULL), INC_ERR_STATE);
     CHECK_EQ_INT(fx.part.core.reads + fx.part.core.writes, 0); /* nothing reached the part */
     /* calls on an uninitialised state */
-    CHECK_ERR(adis_imu_read_burst(&s0, &smp), INC_ERR_STATE);
+    CHECK_ERR(adis_imu_read_sample(&s0, &smp), INC_ERR_STATE);
     CHECK_ERR(adis_imu_read_channels(&s0, ADIS_IMU_CH_ALL, &smp), INC_ERR_STATE);
     CHECK_ERR(adis_imu_command(&s0, ADIS_IMU_CMD_AUTONULL), INC_ERR_STATE);
-    CHECK_ERR(adis_imu_read_burst(NULL, &smp), INC_ERR_NULL);
+    CHECK_ERR(adis_imu_read_sample(NULL, &smp), INC_ERR_NULL);
     CHECK_ERR(adis_imu_set_gyro_offset(NULL, 0, 0), INC_ERR_NULL);
     CHECK(!adis_imu_busy(NULL));
     /* initialised: argument checks */
     REQUIRE(fx_init() == 0);
-    CHECK_ERR(adis_imu_read_burst(&fx.imu, NULL), INC_ERR_NULL);
+    CHECK_ERR(adis_imu_read_sample(&fx.imu, NULL), INC_ERR_NULL);
     CHECK_ERR(adis_imu_read_channels(&fx.imu, 0, &smp), INC_ERR_INVAL);
     CHECK_ERR(adis_imu_read_channels(&fx.imu, ADIS_IMU_CH(ADIS_IMU_CH_TEMP2), &smp), INC_ERR_INVAL);
     CHECK_ERR(adis_imu_command(&fx.imu, (enum adis_imu_cmd)0x03), INC_ERR_INVAL);

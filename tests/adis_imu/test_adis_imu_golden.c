@@ -49,11 +49,11 @@ static void run_scenario(const struct spi_bus *bus, const struct hal *hal,
     if (r->err[0] != INC_OK) {
         return;
     }
-    r->err[1] = adis_imu_wait_dr(&imu, 0, NULL);
-    r->err[2] = adis_imu_read_burst(&imu, &r->s[0]);
-    r->err[3] = adis_imu_wait_dr(&imu, 0, NULL);
+    r->err[1] = adis_imu_wait_ready(&imu, 0, NULL);
+    r->err[2] = adis_imu_read_sample(&imu, &r->s[0]);
+    r->err[3] = adis_imu_wait_ready(&imu, 0, NULL);
     r->err[4] = adis_imu_read_channels(&imu, ADIS_IMU_CH_ALL, &r->s[1]);
-    (void)adis_imu_wait_dr(&imu, 0, NULL);
+    (void)adis_imu_wait_ready(&imu, 0, NULL);
     r->err[5] = adis_imu_read_channels(
         &imu, ADIS_IMU_CH_GYROS | ADIS_IMU_CH_ACCELS | ADIS_IMU_CH_TEMPS, &r->s[2]);
     r->err[6] = adis_imu_set_gyro_offset(&imu, 2, -1236); /* -15.45 deg/s */
@@ -62,8 +62,8 @@ static void run_scenario(const struct spi_bus *bus, const struct hal *hal,
     }
     r->err[7] = adis_imu_set_sample_period(&imu, 0x0A);
     (void)adis_imu_dr_flush(&imu); /* a sample taken with the offset */
-    (void)adis_imu_wait_dr(&imu, 0, NULL);
-    r->err[8] = adis_imu_read_burst(&imu, &r->s[3]);
+    (void)adis_imu_wait_ready(&imu, 0, NULL);
+    r->err[8] = adis_imu_read_sample(&imu, &r->s[3]);
 }
 
 static void golden_path(enum sim_adis_imu_variant v, char *buf, size_t len)
@@ -195,7 +195,7 @@ static void test_divergence_is_reported(void)
     c.variant = ADIS_IMU_ADIS16405;
     c.dr_pin = SIM_BOARD_DR(0);
     REQUIRE(adis_imu_init(&imu, &c) == INC_OK);
-    CHECK_OK(adis_imu_wait_dr(&imu, 0, NULL));
+    CHECK_OK(adis_imu_wait_ready(&imu, 0, NULL));
     /* registers instead of the recorded burst: */
     CHECK_ERR(adis_imu_read_channels(&imu, ADIS_IMU_CH_GYROS, &s), INC_ERR_MISMATCH);
     CHECK_ERR(trace_replay_finish(&rp), INC_ERR_MISMATCH);

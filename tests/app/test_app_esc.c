@@ -16,23 +16,31 @@
 #define RATE_MHZ 819200u
 #define DEG (3.14159265358979323846 / 180.0)
 
-static int script_read(void *ctx, struct app_sample *out)
+static int script_wait(void *dev, uint32_t timeout_ns)
 {
-    (void)ctx;
-    (void)out;
+    (void)dev;
+    (void)timeout_ns;
     return INC_ERR_UNSUPPORTED;
 }
 
-static int script_identity(void *ctx, struct calrec_binding *out)
+static int script_read(void *dev, struct sensor_sample *out)
 {
-    (void)ctx;
+    (void)dev;
+    (void)out;
+    return INC_ERR_UNSUPPORTED; /* samples are fed with app_esc_step */
+}
+
+static int script_identity(void *dev, struct sensor_identity *out)
+{
+    (void)dev;
     memset(out, 0, sizeof(*out));
-    out->family = CALREC_FAMILY_ADIS163XX;
+    out->family = SENSOR_FAMILY_ADIS163XX;
     out->product = 16405u;
     return INC_OK;
 }
 
-static const struct app_sensor_ops script_ops = {script_read, script_identity};
+static const struct sensor_ops script_ops = {NULL, script_wait,     script_read, NULL,
+                                             NULL, script_identity, NULL};
 static struct app app;
 static struct app_esc esc;
 static uint32_t rng = 99u;
@@ -47,7 +55,7 @@ static double noise(double sd)
 }
 
 /* A sample of a part at roll r, pitch p (deg), with a gyro rate and a bias on every axis. */
-static void sample(struct app_sample *s, double r, double p, const double w[3], double bias)
+static void sample(struct sensor_sample *s, double r, double p, const double w[3], double bias)
 {
     unsigned i;
     memset(s, 0, sizeof(*s));
@@ -56,13 +64,13 @@ static void sample(struct app_sample *s, double r, double p, const double w[3], 
     s->accel_g[2] = (int32_t)lround((cos(r * DEG) * cos(p * DEG) + noise(0.002)) * 65536.0);
     for (i = 0; i < 3u; i++)
         s->gyro_dps[i] = (int32_t)lround((w[i] + bias + noise(0.1)) * 65536.0);
-    s->flags = APP_S_HAVE_GYRO;
+    s->flags = SENSOR_S_HAVE_ACCEL | SENSOR_S_HAVE_GYRO;
 }
 
 static void setup(struct app_esc_cfg *ec)
 {
     struct app_cfg cfg;
-    const struct app_sensor sensor = {&script_ops, NULL};
+    const struct sensor sensor = {&script_ops, NULL};
     REQUIRE(app_cfg_default(&cfg, RATE_MHZ) == INC_OK);
     REQUIRE(app_init(&app, &cfg, &sensor, NULL) == INC_OK);
     REQUIRE(app_esc_cfg_default(ec, RATE_MHZ) == INC_OK);
@@ -76,7 +84,7 @@ static void test_modes(void)
     static const double zero[3] = {0, 0, 0};
     struct app_esc_cfg ec;
     struct app_vehicle veh = {true, 0, 0};
-    struct app_sample s;
+    struct sensor_sample s;
     struct app_esc_output o;
     unsigned i, parked_out = 0u, driving_out = 0u, gap_max = 0u, since = 0u;
     double worst = 0.0;
@@ -139,7 +147,7 @@ static void test_modes(void)
 static void test_no_speed(void)
 {
     struct app_esc_cfg ec;
-    struct app_sample s;
+    struct sensor_sample s;
     struct app_esc_output o;
     unsigned i, driving = 0u, valid = 0u;
     bool have;
@@ -165,7 +173,7 @@ static void test_gyro_correction(void)
     static const double zero[3] = {0, 0, 0};
     struct app_esc_cfg ec;
     struct gyrocal_correction gc = {{-320, -320, -320}, true};
-    struct app_sample s;
+    struct sensor_sample s;
     struct app_esc_output o;
     fx_q16_t bias[3], sig;
     unsigned i;
@@ -188,7 +196,7 @@ static void test_bad_calls(void)
     struct app_esc_cfg ec;
     struct app_esc e2;
     struct app_esc_output o;
-    struct app_sample s;
+    struct sensor_sample s;
     bool have;
     CHECK_EQ_INT(app_esc_cfg_default(NULL, RATE_MHZ), INC_ERR_NULL);
     CHECK_EQ_INT(app_esc_cfg_default(&ec, 50000u), INC_ERR_INVAL);

@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "inclino/sim/epb_rig_state.h"
+#include "adis_imu_regs.h" /* white-box: the driver's register map */
 #include "unit.h"
 
 static struct epb_rig rig;
@@ -53,6 +54,14 @@ static void park(double grade_pct, bool engine, double drive_off_s)
 }
 
 /* Ideal part (no error, no noise): every number of the chain is exact. */
+/* counts of the ADIS16405 (3.333 mg) in Q16 g, by the driver's conversion */
+static int32_t accel_g(int32_t counts)
+{
+    int32_t g = 0;
+    CHECK_OK(adis_imu_accel_g_from_counts(counts, 3333u, &g));
+    return g;
+}
+
 static void test_adis16405_exact(void)
 {
     struct sim_calpart_params ideal;
@@ -73,7 +82,7 @@ static void test_adis16405_exact(void)
     CHECK_EQ_INT(rig.app.id.serial, 0);
     REQUIRE(eol(32u, &rec, &info) == INC_OK);
     /* 1 g = round(1 / 3.333 mg) = 300 counts: offset 0, gain = 300 counts in Q30, exactly. */
-    one = adis_imu_accel_g_q16(300, 3333u);
+    one = accel_g(300);
     CHECK_EQ_INT(rec.acc_offset[0], 0);
     CHECK_EQ_INT(rec.acc_gain[0], (int64_t)one * 16384);
     CHECK_EQ_INT(rec.acc_gain[2], (int64_t)one * 16384);
@@ -87,8 +96,8 @@ static void test_adis16405_exact(void)
     CHECK_OK(rig.app.cal_status);
     CHECK(app_calibrated(&rig.app));
     REQUIRE(app_measure(&rig.app, &r) == INC_OK);
-    tenth = adis_imu_accel_g_q16(30, 3333u);
-    z = adis_imu_accel_g_q16(299, 3333u);
+    tenth = accel_g(30);
+    z = accel_g(299);
     {
         struct cal_acc ref;
         fx_q16_t in[3] = {tenth, 0, z}, out[3];
@@ -208,7 +217,7 @@ static void test_moving_and_alarms(void)
     struct calrec rec;
     struct calstore_info info;
     struct app_result r;
-    struct app_sample s;
+    struct sensor_sample s;
     struct sim_calpart_params ideal;
     sim_calpart_ideal(&ideal);
     ideal.acc_noise_g = 0.002;
@@ -227,16 +236,17 @@ static void test_moving_and_alarms(void)
 
     /* Missed data-ready: 5 sample periods without a read -> the next sample says 4 or 5. */
     park(10.0, false, -1.0);
-    REQUIRE(rig.sensor.ops->read(rig.sensor.ctx, &s) == INC_OK);
+    REQUIRE(sensor_next(&rig.sensor, 0u, &s) == INC_OK);
     epb_rig_wait(&rig, 5.0 / 819.2);
-    REQUIRE(rig.sensor.ops->read(rig.sensor.ctx, &s) == INC_OK);
+    REQUIRE(sensor_next(&rig.sensor, 0u, &s) == INC_OK);
     CHECK(s.missed >= 4u && s.missed <= 5u);
-    CHECK_EQ_INT(s.flags, APP_S_HAVE_GYRO | APP_S_HAVE_TEMP);
+    CHECK_EQ_INT(s.flags, SENSOR_S_HAVE_ACCEL | SENSOR_S_HAVE_GYRO | SENSOR_S_HAVE_TEMP);
     CHECK_NEAR_INT(s.temp_c, FX_Q16_INT(25), FX_Q16_ONE / 10);
 
     /* An alarm in DIAG_STAT (EA on every output): reads fail, the block is not valid. */
     sim_adis_imu_raise_diag(&rig.adis, ADIS_IMU_DIAG_ALARM1);
-    CHECK_ERR(rig.sensor.ops->read(rig.sensor.ctx, &s), INC_ERR_DEVICE);
+    CHECK_ERR(sensor_next(&rig.sensor, 0u, &s), INC_ERR_DEVICE);
+    CHECK_EQ_INT(s.flags, 0); /* nothing handed out with the error */
     app_restart(&rig.app);
     sim_adis_imu_raise_diag(&rig.adis, ADIS_IMU_DIAG_ALARM1);
     REQUIRE(app_measure(&rig.app, &r) == INC_OK);
@@ -246,24 +256,27 @@ static void test_moving_and_alarms(void)
     CHECK_EQ_INT(epb_rig_violations(&rig), 0);
 }
 
-static void test_adapter_errors(void)
+/* The drivers' ops refuse what they cannot do, through the struct sensor the application uses. */
+static void test_sensor_errors(void)
 {
     struct adis_imu imu;
-    struct app_adis ad;
-    struct app_sca3000 as;
     struct sca3000 dev;
-    struct app_sensor out;
+    struct sensor si = {&adis_imu_sensor_ops, &imu}, ss = {&sca3000_sensor_ops, &dev};
+    struct sensor_sample s;
+    struct sensor_identity id;
     memset(&imu, 0, sizeof imu);
     memset(&dev, 0, sizeof dev);
-    CHECK_ERR(app_adis_sensor(NULL, &imu, &out), INC_ERR_NULL);
-    CHECK_ERR(app_adis_sensor(&ad, &imu, &out), INC_ERR_STATE); /* driver not ready */
-    CHECK_ERR(app_sca3000_sensor(&as, &dev, NULL, &out), INC_ERR_NULL);
+    CHECK_ERR(sensor_next(&si, 0u, &s), INC_ERR_STATE); /* driver not ready */
+    CHECK_ERR(sensor_get_identity(&si, &id), INC_ERR_STATE);
+    CHECK_ERR(sensor_next(&ss, 0u, &s), INC_ERR_STATE);
     REQUIRE(epb_rig_init(&rig, EPB_RIG_SCA3000_D01, NULL, 1u) == INC_OK);
-    CHECK_ERR(app_sca3000_sensor(&as, &dev, &rig.board.hal, &out), INC_ERR_STATE);
     cfg_small();
     REQUIRE(epb_rig_power_up(&rig, &cfg) == INC_OK);
+    CHECK_OK(sensor_next(&rig.sensor, 0u, &s));
+    CHECK_EQ_INT(s.flags & (SENSOR_S_HAVE_ACCEL | SENSOR_S_HAVE_GYRO | SENSOR_S_HAVE_TEMP),
+                 SENSOR_S_HAVE_ACCEL | SENSOR_S_HAVE_TEMP);
     REQUIRE(sca3000_set_mode(&rig.sca_dev, SCA3000_MODE_MOTION) == INC_OK);
-    CHECK_ERR(app_sca3000_sensor(&as, &rig.sca_dev, &rig.board.hal, &out), INC_ERR_STATE);
+    CHECK_ERR(sensor_wait_ready(&rig.sensor, 0u), INC_ERR_STATE); /* no output rate */
     CHECK_EQ_INT(epb_rig_violations(&rig), 0);
 }
 
@@ -273,6 +286,6 @@ int main(void)
     UNIT_RUN(test_sca3000_part_a);
     UNIT_RUN(test_identity_and_bad_records);
     UNIT_RUN(test_moving_and_alarms);
-    UNIT_RUN(test_adapter_errors);
+    UNIT_RUN(test_sensor_errors);
     return unit_report();
 }

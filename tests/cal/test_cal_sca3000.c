@@ -31,7 +31,6 @@ static struct sca3000 dev;
 
 static int setup(void)
 {
-    static const struct spi_timing safe = SCA3000_SPI_TIMING_INIT;
     struct sim_sca3000_cfg pc;
     struct sca3000_cfg cfg;
     struct sim_calpart_params p;
@@ -59,10 +58,7 @@ static int setup(void)
     sim_sca3000_set_error_model(&part, &em);
     memset(&cfg, 0, sizeof cfg);
     cfg.bus = &board.spi.bus;
-    cfg.spi.cs = SIM_BOARD_CS(0);
-    cfg.spi.mode = SPI_MODE_3;
-    cfg.spi.bits = 8;
-    cfg.spi.timing = safe;
+    cfg.cs = SIM_BOARD_CS(0);
     cfg.variant = SCA3000_D01;
     cfg.hal = &board.hal;
     cfg.int_pin = SIM_BOARD_DR(0);
@@ -93,7 +89,7 @@ static int read_mean(unsigned n, fx_q16_t mean[3], int16_t last[3])
         err = sca3000_read_accel(&dev, last);
         if (err != INC_OK) return err;
         for (i = 0; i < 3u; i++) {
-            err = sca3000_accel_to_q16_g(last[i], SCA3000_D01, &g[i]);
+            err = sca3000_accel_g_from_counts(last[i], SCA3000_D01, &g[i]);
             if (err != INC_OK) return err;
         }
         err = cal_avg_add(&a, g);
@@ -107,7 +103,7 @@ static int read_temp(fx_q16_t *t)
 {
     uint16_t raw = 0;
     int err = sca3000_read_temp(&dev, &raw);
-    return err ? err : sca3000_temp_to_q16_c(raw, t);
+    return err ? err : sca3000_temp_c_from_counts(raw, t);
 }
 
 /* Counts the error model must produce for specific force f at temperature t (noise off). */
@@ -141,7 +137,7 @@ static void test_hook_and_six_position(void)
         expected_counts(faces[f], 25.0, c);
         for (i = 0; i < 3u; i++) {
             CHECK_EQ_INT(last[i], c[i]); /* the error model's output, exactly, over SPI */
-            REQUIRE(sca3000_accel_to_q16_g(c[i], SCA3000_D01, &exp_q16[f][i]) == INC_OK);
+            REQUIRE(sca3000_accel_g_from_counts(c[i], SCA3000_D01, &exp_q16[f][i]) == INC_OK);
             CHECK_EQ_INT(mean[f][i], exp_q16[f][i]);
         }
     }

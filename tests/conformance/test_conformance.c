@@ -23,7 +23,10 @@
 #include "inclino/adis16255.h"
 #include "inclino/adis_imu.h"
 #include "inclino/sca3000.h"
+#include "adis16255_regs.h"
+#include "adis_imu_regs.h"
 #include "inclino/sim/bench.h"
+#include "sca3000_regs.h"
 #include "unit.h"
 
 #include <stdio.h>
@@ -190,10 +193,10 @@ static int imu_init(void)
 static int imu_read(bool *value_with_error)
 {
     struct adis_imu_sample s;
-    int err = adis_imu_wait_dr(&imu, 0, NULL);
+    int err = adis_imu_wait_ready(&imu, 0, NULL);
     memset(&s, 0, sizeof(s));
     if (err == INC_OK) {
-        err = adis_imu_read_burst(&imu, &s);
+        err = adis_imu_read_sample(&imu, &s);
     }
     *value_with_error = err != INC_OK && s.valid != 0u;
     return err;
@@ -211,7 +214,6 @@ static enum sca3000_variant sca_variant(enum sim_sca3000_variant v)
 
 static int sca_setup_variant(enum sim_sca3000_variant v)
 {
-    static const struct spi_timing safe = SCA3000_SPI_TIMING_INIT;
     struct sim_sca3000_cfg mc;
     int err = sim_bench_init(&bench);
     if (err != INC_OK) {
@@ -221,10 +223,8 @@ static int sca_setup_variant(enum sim_sca3000_variant v)
     err = sim_bench_add_sca3000(&bench, &mc);
     memset(&scac, 0, sizeof(scac));
     scac.bus = &bench.board.spi.bus;
-    scac.spi.cs = SIM_BOARD_CS(0);
-    scac.spi.mode = SPI_MODE_3;
-    scac.spi.bits = 8;
-    scac.spi.timing = safe;
+    scac.cs = SIM_BOARD_CS(0);
+    scac.spi_mode0 = false; /* mode 3; the driver builds its own 8-bit frames and timing */
     scac.variant = sca_variant(v);
     scac.hal = &bench.board.hal;
     scac.int_pin = SIM_BOARD_DR(0);
@@ -402,9 +402,9 @@ static void sweep_imu(const struct imu_range *r)
         sim_adis_imu_set_aux(&bench.m.adis_imu, kx * 805.8e-6);
         hal_delay_ns(&bench.board.hal, adis_imu_current_period_ns(&imu));
         (void)adis_imu_dr_flush(&imu);
-        err = adis_imu_wait_dr(&imu, 0, NULL);
+        err = adis_imu_wait_ready(&imu, 0, NULL);
         if (err == INC_OK) {
-            err = adis_imu_read_burst(&imu, &s);
+            err = adis_imu_read_sample(&imu, &s);
         }
         if (err == INC_OK) {
             err = adis_imu_to_phys(&imu, &s, &ph);
@@ -492,13 +492,13 @@ static void sweep_sca3000(enum sim_sca3000_variant v)
         }
         for (j = 0; j < 3u; j++) {
             int32_t g = 0;
-            CHECK_OK(sca3000_accel_to_q16_g(s.xyz[j], dv, &g));
+            CHECK_OK(sca3000_accel_g_from_counts(s.xyz[j], dv, &g));
             check_rat(&sa[j], s.xyz[j], g, (int64_t)s.xyz[j] * ug * 65536, 1000000);
         }
         if (d01) {
             int32_t c = 0;
             CHECK(s.temp_valid);
-            CHECK_OK(sca3000_temp_to_q16_c(s.temp_raw, &c));
+            CHECK_OK(sca3000_temp_c_from_counts(s.temp_raw, &c));
             check_rat(&st, s.temp_raw, c, ((int64_t)10 * s.temp_raw - 2146) * 65536, 18);
         }
     }

@@ -14,6 +14,7 @@
  * shorter (said per constant).
  */
 #include "rig.h"
+#include "adis_imu_regs.h" /* white-box: the driver's register map */
 #include "unit.h"
 
 #include <math.h>

@@ -20,7 +20,6 @@ enum sca3000_variant fx_driver_variant(enum sim_sca3000_variant v)
 
 int fx_setup_part(enum sim_sca3000_variant v, uint8_t revid)
 {
-    static const struct spi_timing safe = SCA3000_SPI_TIMING_INIT;
     struct sim_sca3000_cfg pc;
     int err;
     memset(&fx, 0, sizeof(fx));
@@ -35,10 +34,8 @@ int fx_setup_part(enum sim_sca3000_variant v, uint8_t revid)
         return err;
     }
     fx.cfg.bus = &fx.board.spi.bus;
-    fx.cfg.spi.cs = FX_CS;
-    fx.cfg.spi.mode = SPI_MODE_3;
-    fx.cfg.spi.bits = 8;
-    fx.cfg.spi.timing = safe;
+    fx.cfg.cs = FX_CS;
+    fx.cfg.spi_mode0 = false;
     fx.cfg.variant = fx_driver_variant(v);
     fx.cfg.expected_revid = 0;
     fx.cfg.hal = &fx.board.hal;

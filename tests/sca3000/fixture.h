@@ -7,6 +7,7 @@
 #define SCA3000_FIXTURE_H
 
 #include "inclino/sca3000.h"
+#include "sca3000_regs.h" /* white-box: the driver's register map */
 #include "inclino/sim/board.h"
 #include "inclino/sim/sca3000.h"
 #include "unit.h"

@@ -17,44 +17,45 @@ struct vec {
 static void test_decode_accel(void)
 {
     int16_t c = 0x5555;
-    CHECK_OK(sca3000_decode_accel(0x0000, &c));
+    CHECK_OK(sca3000_accel_counts_from_word(0x0000, &c));
     CHECK_EQ_INT(c, 0);
-    CHECK_OK(sca3000_decode_accel(0x0008, &c));
+    CHECK_OK(sca3000_accel_counts_from_word(0x0008, &c));
     CHECK_EQ_INT(c, 1);
-    CHECK_OK(sca3000_decode_accel(0xFFF8, &c));
+    CHECK_OK(sca3000_accel_counts_from_word(0xFFF8, &c));
     CHECK_EQ_INT(c, -1);
-    CHECK_OK(sca3000_decode_accel(0x7FF8, &c));
+    CHECK_OK(sca3000_accel_counts_from_word(0x7FF8, &c));
     CHECK_EQ_INT(c, 4095);
-    CHECK_OK(sca3000_decode_accel(0x8000, &c));
+    CHECK_OK(sca3000_accel_counts_from_word(0x8000, &c));
     CHECK_EQ_INT(c, -4096);
-    CHECK_OK(sca3000_decode_accel(0x29A8, &c)); /* 1333 << 3 */
+    CHECK_OK(sca3000_accel_counts_from_word(0x29A8, &c)); /* 1333 << 3 */
     CHECK_EQ_INT(c, 1333);
-    CHECK_OK(sca3000_decode_accel(0xD658, &c)); /* -1333 << 3 (two's complement, 16 bit) */
+    CHECK_OK(
+        sca3000_accel_counts_from_word(0xD658, &c)); /* -1333 << 3 (two's complement, 16 bit) */
     CHECK_EQ_INT(c, -1333);
     /* bits[2:0] are always 0 on the part: anything else is not a reply of the part. */
     c = 77;
-    CHECK_ERR(sca3000_decode_accel(0xFFFF, &c), INC_ERR_BUS);
-    CHECK_ERR(sca3000_decode_accel(0x0001, &c), INC_ERR_BUS);
-    CHECK_ERR(sca3000_decode_accel(0x0004, &c), INC_ERR_BUS);
+    CHECK_ERR(sca3000_accel_counts_from_word(0xFFFF, &c), INC_ERR_BUS);
+    CHECK_ERR(sca3000_accel_counts_from_word(0x0001, &c), INC_ERR_BUS);
+    CHECK_ERR(sca3000_accel_counts_from_word(0x0004, &c), INC_ERR_BUS);
     CHECK_EQ_INT(c, 77); /* untouched on error */
-    CHECK_ERR(sca3000_decode_accel(0x0000, NULL), INC_ERR_NULL);
+    CHECK_ERR(sca3000_accel_counts_from_word(0x0000, NULL), INC_ERR_NULL);
 }
 
 static void test_decode_ring_and_temp(void)
 {
-    CHECK_EQ_INT(sca3000_decode_ring11(0x0000), 0);
-    CHECK_EQ_INT(sca3000_decode_ring11(0x0020), 4);
-    CHECK_EQ_INT(sca3000_decode_ring11(0xFFE0), -4);
-    CHECK_EQ_INT(sca3000_decode_ring11(0x7FE0), 4092);
-    CHECK_EQ_INT(sca3000_decode_ring11(0x8000), -4096);
-    CHECK_EQ_INT(sca3000_decode_ring11(0x001F), 0);   /* bits[4:0] are not data */
-    CHECK_EQ_INT(sca3000_decode_ring11(0x0A60), 332); /* 83 << 5 */
+    CHECK_EQ_INT(sca3000_ring_counts_from_word(0x0000), 0);
+    CHECK_EQ_INT(sca3000_ring_counts_from_word(0x0020), 4);
+    CHECK_EQ_INT(sca3000_ring_counts_from_word(0xFFE0), -4);
+    CHECK_EQ_INT(sca3000_ring_counts_from_word(0x7FE0), 4092);
+    CHECK_EQ_INT(sca3000_ring_counts_from_word(0x8000), -4096);
+    CHECK_EQ_INT(sca3000_ring_counts_from_word(0x001F), 0);   /* bits[4:0] are not data */
+    CHECK_EQ_INT(sca3000_ring_counts_from_word(0x0A60), 332); /* 83 << 5 */
 
-    CHECK_EQ_INT(sca3000_decode_temp(0x2080), 260); /* 260 << 5 */
-    CHECK_EQ_INT(sca3000_decode_temp(0x3FE0), 511);
-    CHECK_EQ_INT(sca3000_decode_temp(0xC000), 0); /* bits 15:14 are not data */
-    CHECK_EQ_INT(sca3000_decode_temp(0x001F), 0); /* nor bits 4:0 */
-    CHECK_EQ_INT(sca3000_decode_temp(0x1AC0), 214);
+    CHECK_EQ_INT(sca3000_temp_counts_from_word(0x2080), 260); /* 260 << 5 */
+    CHECK_EQ_INT(sca3000_temp_counts_from_word(0x3FE0), 511);
+    CHECK_EQ_INT(sca3000_temp_counts_from_word(0xC000), 0); /* bits 15:14 are not data */
+    CHECK_EQ_INT(sca3000_temp_counts_from_word(0x001F), 0); /* nor bits 4:0 */
+    CHECK_EQ_INT(sca3000_temp_counts_from_word(0x1AC0), 214);
 }
 
 static void check_accel_vectors(enum sca3000_variant v, const struct vec *t, size_t n, int32_t ug)
@@ -63,9 +64,9 @@ static void check_accel_vectors(enum sca3000_variant v, const struct vec *t, siz
     CHECK_EQ_INT(sca3000_ug_per_lsb(v), ug);
     for (i = 0; i < n; i++) {
         int32_t g = 0x7777, u = 0;
-        CHECK_OK(sca3000_accel_to_q16_g(t[i].in, v, &g));
+        CHECK_OK(sca3000_accel_g_from_counts(t[i].in, v, &g));
         CHECK_EQ_INT(g, t[i].out);
-        CHECK_OK(sca3000_accel_to_ug(t[i].in, v, &u));
+        CHECK_OK(sca3000_accel_ug_from_counts(t[i].in, v, &u));
         CHECK_EQ_INT(u, t[i].in * ug);
     }
 }
@@ -93,13 +94,13 @@ static void test_accel_vectors(void)
 static void test_accel_errors(void)
 {
     int32_t g = 123;
-    CHECK_ERR(sca3000_accel_to_q16_g(4096, SCA3000_D01, &g), INC_ERR_RANGE);
-    CHECK_ERR(sca3000_accel_to_q16_g(-4097, SCA3000_D01, &g), INC_ERR_RANGE);
-    CHECK_ERR(sca3000_accel_to_q16_g(0, SCA3000_E01, &g), INC_ERR_INVAL);
-    CHECK_ERR(sca3000_accel_to_q16_g(0, (enum sca3000_variant)9, &g), INC_ERR_INVAL);
-    CHECK_ERR(sca3000_accel_to_q16_g(0, SCA3000_D01, NULL), INC_ERR_NULL);
-    CHECK_ERR(sca3000_accel_to_ug(5000, SCA3000_E05, &g), INC_ERR_RANGE);
-    CHECK_ERR(sca3000_accel_to_ug(0, SCA3000_E01, &g), INC_ERR_INVAL);
+    CHECK_ERR(sca3000_accel_g_from_counts(4096, SCA3000_D01, &g), INC_ERR_RANGE);
+    CHECK_ERR(sca3000_accel_g_from_counts(-4097, SCA3000_D01, &g), INC_ERR_RANGE);
+    CHECK_ERR(sca3000_accel_g_from_counts(0, SCA3000_E01, &g), INC_ERR_INVAL);
+    CHECK_ERR(sca3000_accel_g_from_counts(0, (enum sca3000_variant)9, &g), INC_ERR_INVAL);
+    CHECK_ERR(sca3000_accel_g_from_counts(0, SCA3000_D01, NULL), INC_ERR_NULL);
+    CHECK_ERR(sca3000_accel_ug_from_counts(5000, SCA3000_E05, &g), INC_ERR_RANGE);
+    CHECK_ERR(sca3000_accel_ug_from_counts(0, SCA3000_E01, &g), INC_ERR_INVAL);
     CHECK_EQ_INT(g, 123);
     CHECK_EQ_INT(sca3000_ug_per_lsb(SCA3000_E01), 0);
 }
@@ -117,7 +118,7 @@ static void test_accel_bound_exhaustive(void)
         for (c = -4096; c <= 4095; c++) {
             int32_t q = 0, qn = 0;
             int64_t diff;
-            if (sca3000_accel_to_q16_g(c, (enum sca3000_variant)v, &q) != 0) {
+            if (sca3000_accel_g_from_counts(c, (enum sca3000_variant)v, &q) != 0) {
                 bad++;
                 continue;
             }
@@ -125,7 +126,7 @@ static void test_accel_bound_exhaustive(void)
             if (diff < 0) diff = -diff;
             if (diff > worst) worst = diff;
             if (c > -4096 &&
-                (sca3000_accel_to_q16_g(-c, (enum sca3000_variant)v, &qn) != 0 || qn != -q)) {
+                (sca3000_accel_g_from_counts(-c, (enum sca3000_variant)v, &qn) != 0 || qn != -q)) {
                 bad++;
             }
         }
@@ -145,21 +146,21 @@ static void test_temperature(void)
     int32_t raw;
     int64_t worst = 0;
     for (i = 0; i < sizeof(t) / sizeof(t[0]); i++) {
-        CHECK_OK(sca3000_temp_to_q16_c(t[i].in, &c));
+        CHECK_OK(sca3000_temp_c_from_counts(t[i].in, &c));
         CHECK_EQ_INT(c, t[i].out);
     }
     for (raw = 0; raw <= 511; raw++) {
         int64_t d;
-        CHECK_OK(sca3000_temp_to_q16_c(raw, &c));
+        CHECK_OK(sca3000_temp_c_from_counts(raw, &c));
         d = (int64_t)c * 18 - ((int64_t)raw * 10 - 2146) * 65536;
         if (d < 0) d = -d;
         if (d > worst) worst = d;
     }
     CHECK(worst <= 9); /* 0.5 LSB of Q16.16 in units of 1/18 */
     c = 99;
-    CHECK_ERR(sca3000_temp_to_q16_c(512, &c), INC_ERR_RANGE);
-    CHECK_ERR(sca3000_temp_to_q16_c(-1, &c), INC_ERR_RANGE);
-    CHECK_ERR(sca3000_temp_to_q16_c(0, NULL), INC_ERR_NULL);
+    CHECK_ERR(sca3000_temp_c_from_counts(512, &c), INC_ERR_RANGE);
+    CHECK_ERR(sca3000_temp_c_from_counts(-1, &c), INC_ERR_RANGE);
+    CHECK_ERR(sca3000_temp_c_from_counts(0, NULL), INC_ERR_NULL);
     CHECK_EQ_INT(c, 99);
 }
 

@@ -24,7 +24,7 @@ static void test_init_each_variant(void)
         CHECK_EQ_HEX(fx.part.mode, SIM_SCA3000_MODE_DEFAULT); /* reserved bit3 kept */
         CHECK_EQ_HEX(fx.dev.int_mask, SIM_SCA3000_INT_MASK_DEFAULT);
         CHECK_EQ_INT(fx.part.corrupt_frames, 0);
-        CHECK_EQ_INT(fx.dev.bus_faults, 0);
+        CHECK_EQ_INT(fx.dev.bus_errors, 0);
         CHECK_NO_VIOLATIONS();
     }
     /* A part found in ring mode with option 1 is brought to normal, ring off, bit3 kept. */
@@ -65,7 +65,7 @@ static void test_xyz_exact_counts(void)
             CHECK_EQ_INT(xyz[0], cases[i].want[v][0]);
             CHECK_EQ_INT(xyz[1], cases[i].want[v][1]);
             CHECK_EQ_INT(xyz[2], cases[i].want[v][2]);
-            CHECK_OK(sca3000_accel_to_q16_g(xyz[2], fx.cfg.variant, &g));
+            CHECK_OK(sca3000_accel_g_from_counts(xyz[2], fx.cfg.variant, &g));
             CHECK_NEAR(g / 65536.0,
                        (double)cases[i].want[v][2] * sca3000_ug_per_lsb(fx.cfg.variant) * 1e-6,
                        8e-6);
@@ -89,7 +89,7 @@ static void test_temperature_d01(void)
         fx_wait_ns(SETTLE_NS);
         CHECK_OK(sca3000_read_temp(&fx.dev, &raw));
         CHECK_EQ_INT(raw, want[i]);
-        CHECK_OK(sca3000_temp_to_q16_c(raw, &c));
+        CHECK_OK(sca3000_temp_c_from_counts(raw, &c));
         CHECK_NEAR(c / 65536.0, t_c[i], 0.3); /* one count is 0.56 degC */
     }
     memset(&s, 0, sizeof(s));

@@ -504,11 +504,11 @@ int main(int argc, char **argv)
     bool all_valid_inside = true;
     uint32_t reads = 0;
     while (results.size() < blocks) {
-        app_sample s;
+        sensor_sample s;
         app_corrected c;
         app_result r;
         bool done = false;
-        const int rerr = epb_rig_sensor(rig)->ops->read(epb_rig_sensor(rig)->ctx, &s);
+        const int rerr = sensor_next(epb_rig_sensor(rig), 0u, &s);
         reads++;
         err = app_step(epb_rig_app(rig), &s, rerr, &c, &done, &r);
         if (err != INC_OK) {

@@ -37,6 +37,7 @@
 #include "inclino/sca3000.h"
 #include "inclino/sim/imu_csv.h"
 #include "inclino/simflash.h"
+#include "inclino/sensor.h"
 #include "inclino/tilt.h"
 
 #define RAD2DEG (180.0 / 3.14159265358979323846)
@@ -91,12 +92,12 @@ static int32_t q16_clip(double value, double fs, bool *sat)
     return (int32_t)(c < 0.0 ? -floor(-c + 0.5) : floor(c + 0.5));
 }
 
-/* One row as the part would deliver it (nominal-scaled Q16, app_sensor.h). gyro_fs, acc_fs: the
+/* One row as the part would deliver it (nominal-scaled Q16, inclino/sensor.h). gyro_fs, acc_fs: the
  * generic part's full scale. sat_axes: bits 0-2 gyro x y z, 3-5 accel x y z saturated. */
 static void quantise_row(const struct part *p, const double *v, bool have_temp, double gyro_fs,
-                         double acc_fs, struct app_sample *s, unsigned *sat_axes)
+                         double acc_fs, struct sensor_sample *s, unsigned *sat_axes)
 {
-    bool asat = false, gsat = false, tsat = false;
+    bool tsat = false;
     unsigned i;
     memset(s, 0, sizeof(*s));
     *sat_axes = 0u;
@@ -106,42 +107,44 @@ static void quantise_row(const struct part *p, const double *v, bool have_temp, 
             s->accel_g[i] = q16_clip(v[4 + i], acc_fs, &aa);
             s->gyro_dps[i] = q16_clip(v[1 + i], gyro_fs, &ga);
         } else if (p->adis) {
-            const int32_t ca = quant(v[4 + i] * 1e6, (double)p->acc_lsb_ug, -8192, 8191, &asat);
-            const int32_t cg = quant(v[1 + i], 0.05, -8192, 8191, &gsat);
-            s->accel_g[i] = adis_imu_accel_g_q16(ca, p->acc_lsb_ug);
-            s->gyro_dps[i] = adis_imu_gyro_dps_q16(cg, ADIS_IMU_RANGE_300);
-            aa = ca <= -8192 || ca >= 8191;
-            ga = cg <= -8192 || cg >= 8191;
+            const int32_t ca = quant(v[4 + i] * 1e6, (double)p->acc_lsb_ug, -8192, 8191, &aa);
+            const int32_t cg = quant(v[1 + i], 0.05, -8192, 8191, &ga);
+            (void)adis_imu_accel_g_from_counts(ca, p->acc_lsb_ug, &s->accel_g[i]);
+            (void)adis_imu_gyro_dps_from_counts(cg, ADIS_IMU_RANGE_300, &s->gyro_dps[i]);
+            aa = aa || ca <= -8192 || ca >= 8191;
+            ga = ga || cg <= -8192 || cg >= 8191;
         } else {
             int32_t g = 0;
-            const int32_t ca = quant(v[4 + i] * 1e6, (double)p->acc_lsb_ug, -4096, 4095, &asat);
-            (void)sca3000_accel_to_q16_g(ca, (enum sca3000_variant)p->variant, &g);
+            const int32_t ca = quant(v[4 + i] * 1e6, (double)p->acc_lsb_ug, -4096, 4095, &aa);
+            (void)sca3000_accel_g_from_counts(ca, (enum sca3000_variant)p->variant, &g);
             s->accel_g[i] = g;
-            aa = ca <= -4096 || ca >= 4095;
+            aa = aa || ca <= -4096 || ca >= 4095;
         }
-        if (ga) *sat_axes |= 1u << i;
-        if (aa) *sat_axes |= 8u << i;
-        asat = asat || aa;
-        gsat = gsat || ga;
+        if (ga) {
+            *sat_axes |= 1u << i;
+            s->flags |= SENSOR_S_GYRO_SAT_X << i;
+        }
+        if (aa) {
+            *sat_axes |= 8u << i;
+            s->flags |= SENSOR_S_ACCEL_SAT_X << i;
+        }
     }
-    s->flags = p->adis || p->generic ? APP_S_HAVE_GYRO : 0u;
+    s->flags |= SENSOR_S_HAVE_ACCEL | (p->adis || p->generic ? SENSOR_S_HAVE_GYRO : 0u);
     if (have_temp && p->temp) {
         if (p->generic) {
             s->temp_c = q16_clip(v[7], 1000.0, &tsat);
         } else if (p->adis) {
             const double lsb = p->family_1640x ? 0.14 : 0.136;
             const int32_t c = quant(v[7] - 25.0, lsb, -2048, 2047, &tsat);
-            s->temp_c = adis_imu_temp_c_q16(c, p->family_1640x ? ADIS_IMU_FAMILY_1640X
-                                                               : ADIS_IMU_FAMILY_1636X);
+            (void)adis_imu_temp_c_from_counts(
+                c, p->family_1640x ? ADIS_IMU_FAMILY_1640X : ADIS_IMU_FAMILY_1636X, &s->temp_c);
         } else {
             /* counts = T * 1.8 + 214.6 (sca3000.h, the Linux formula) */
             const int32_t raw = quant(v[7] * 1.8 + 214.6, 1.0, 0, 511, &tsat);
-            (void)sca3000_temp_to_q16_c(raw, &s->temp_c);
+            (void)sca3000_temp_c_from_counts(raw, &s->temp_c);
         }
-        s->flags |= APP_S_HAVE_TEMP;
+        s->flags |= SENSOR_S_HAVE_TEMP;
     }
-    if (asat) s->flags |= APP_S_ACCEL_SAT;
-    if (gsat) s->flags |= APP_S_GYRO_SAT;
 }
 
 /* ---- An emulated flash (sim_flash): the calibration is loaded the way the firmware loads it ---- */
@@ -151,26 +154,35 @@ static void quantise_row(const struct part *p, const double *v, bool have_temp, 
 static uint8_t flash_mem[2u * PAGE];
 static struct simflash flash;
 
-/* ---- The replay "sensor": the identity of the chosen part; samples come through app_step --------- */
+/* ---- The replay sensor: the identity of the chosen part (its samples are the recorded rows,
+ * fed to app_step one by one, so its wait and read are never called) --------------------------- */
 
 struct replay_id {
-    struct calrec_binding id;
+    struct sensor_identity id;
 };
 
-static int replay_read(void *ctx, struct app_sample *out)
+static int replay_wait(void *dev, uint32_t timeout_ns)
 {
-    (void)ctx;
+    (void)dev;
+    (void)timeout_ns;
+    return INC_ERR_UNSUPPORTED;
+}
+
+static int replay_read(void *dev, struct sensor_sample *out)
+{
+    (void)dev;
     (void)out;
     return INC_ERR_UNSUPPORTED; /* rows are fed with app_step */
 }
 
-static int replay_identity(void *ctx, struct calrec_binding *out)
+static int replay_identity(void *dev, struct sensor_identity *out)
 {
-    *out = ((const struct replay_id *)ctx)->id;
+    *out = ((const struct replay_id *)dev)->id;
     return INC_OK;
 }
 
-static const struct app_sensor_ops replay_ops = {replay_read, replay_identity};
+static const struct sensor_ops replay_ops = {NULL, replay_wait,     replay_read, NULL,
+                                             NULL, replay_identity, NULL};
 
 /* ---- Input: named columns (BROAD layout) or the positional layout --------------------------- */
 
@@ -859,7 +871,7 @@ int main(int argc, char **argv)
     struct rows t = {NULL, NULL, 0, false, false};
     struct app_cfg cfg;
     struct replay_id rid;
-    struct app_sensor sensor = {&replay_ops, &rid};
+    const struct sensor sensor = {&replay_ops, &rid};
     struct app_result last;
     struct counts cnt;
     char msg[512] = "";
@@ -969,7 +981,12 @@ int main(int argc, char **argv)
             }
         } else {
             calrec_set_default(&rec);
-            rec.binding = rid.id;
+            rec.binding.family = rid.id.family;
+            rec.binding.product = rid.id.product;
+            rec.binding.revision = rid.id.revision;
+            rec.binding.serial = rid.id.serial;
+            rec.binding.lot_id1 = rid.id.lot_id1;
+            rec.binding.lot_id2 = rid.id.lot_id2;
         }
         if (calstore_save(&store, &rec, NULL) != INC_OK) {
             rows_free(&t);
@@ -1013,7 +1030,7 @@ int main(int argc, char **argv)
     for (i = 0; i < t.n; i++) {
         const double *v = t.v + i * C_N;
         const double dt = i == 0 ? nominal : v[C_T] - t.v[(i - 1) * C_N + C_T];
-        struct app_sample s;
+        struct sensor_sample s;
         struct app_corrected c;
         struct app_result res;
         struct est_out eo;

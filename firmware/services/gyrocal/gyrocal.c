@@ -105,16 +105,30 @@ int gyrocal_default_cfg(struct gyrocal_cfg *cfg, const struct adis_imu_variant_i
     return INC_OK;
 }
 
+/* The driver's settings in force (the driver is ready: gyrocal_init checked it). */
+static struct adis_imu_settings settings(const struct gyrocal *g)
+{
+    struct adis_imu_settings st;
+    (void)adis_imu_get_settings(g->imu, &st);
+    return st;
+}
+
+static uint64_t now_ns(const struct gyrocal *g)
+{
+    return hal_now_ns(adis_imu_hal(g->imu));
+}
+
 int gyrocal_init(struct gyrocal *g, struct adis_imu *imu, const struct gyrocal_cfg *cfg)
 {
+    struct adis_imu_settings st;
     unsigned m;
     int err;
     if (g == NULL || imu == NULL || cfg == NULL) {
         return INC_ERR_NULL;
     }
     g->ready = false;
-    if (!imu->ready) {
-        return INC_ERR_STATE;
+    if (adis_imu_get_settings(imu, &st) != INC_OK) {
+        return INC_ERR_STATE; /* the driver has not passed init */
     }
     if (cfg->manual_samples < 2u || cfg->manual_samples > MAX_AVG_SAMPLES ||
         cfg->verify_samples > MAX_AVG_SAMPLES || cfg->verify_sigmas < 1u ||
@@ -172,8 +186,8 @@ int gyrocal_feed(struct gyrocal *g, const struct adis_imu_sample *s)
 static int read_one(struct gyrocal *g, struct adis_imu_sample *s, uint32_t *missed_acc)
 {
     uint32_t missed = 0;
-    if (g->imu->dr_enabled) {
-        const int err = adis_imu_wait_dr(g->imu, 0, &missed);
+    if (settings(g).dr_enabled) {
+        const int err = adis_imu_wait_ready(g->imu, 0, &missed);
         if (err != INC_OK) {
             return err;
         }
@@ -182,9 +196,9 @@ static int read_one(struct gyrocal *g, struct adis_imu_sample *s, uint32_t *miss
             *missed_acc += missed;
         }
     } else {
-        hal_delay_ns(g->imu->cfg.hal, adis_imu_current_period_ns(g->imu));
+        hal_delay_ns(adis_imu_hal(g->imu), adis_imu_current_period_ns(g->imu));
     }
-    return adis_imu_read_burst(g->imu, s);
+    return adis_imu_read_sample(g->imu, s);
 }
 
 static int read_feed(struct gyrocal *g, struct adis_imu_sample *s, uint32_t *missed_acc)
@@ -335,13 +349,13 @@ static void result_start(struct gyrocal *g, enum gyrocal_mode mode, struct gyroc
     res->samples = 0;
     res->missed = 0;
     res->t_avg_start_ns = res->t_avg_end_ns = 0;
-    res->t_start_ns = res->t_end_ns = hal_now_ns(g->imu->cfg.hal);
+    res->t_start_ns = res->t_end_ns = now_ns(g);
 }
 
 static int finish(struct gyrocal *g, struct gyrocal_result *res, enum gyrocal_reason why, int err)
 {
     res->reason = (uint8_t)why;
-    res->t_end_ns = hal_now_ns(g->imu->cfg.hal);
+    res->t_end_ns = now_ns(g);
     return err;
 }
 
@@ -377,13 +391,14 @@ static bool at_limit(int32_t off)
 /* Restore SMPL_PRD / SENS_AVG saved at the start of a procedure (when they changed). */
 static int restore_settings(struct gyrocal *g, uint8_t prd, uint16_t avg)
 {
+    const struct adis_imu_settings st = settings(g);
     int err = INC_OK;
-    if ((g->imu->sens_avg & 0x07FFu) != (avg & 0x07FFu)) {
+    if ((st.sens_avg & 0x07FFu) != (avg & 0x07FFu)) {
         err = adis_imu_set_filter(
             g->imu, avg & ADIS_IMU_SENS_AVG_M_MASK,
             (enum adis_imu_range)((avg >> ADIS_IMU_SENS_AVG_RANGE_SHIFT) & 7u));
     }
-    if (err == INC_OK && (uint8_t)g->imu->smpl_prd != prd) {
+    if (err == INC_OK && st.smpl_prd != prd) {
         err = adis_imu_set_sample_period(g->imu, prd);
     }
     return err;
@@ -416,7 +431,7 @@ static bool verify(const struct gyrocal *g, const struct sums *v, unsigned k, co
                    bool corr_valid, struct gyrocal_result *res)
 {
     struct gyrocal_correction c;
-    const uint32_t taps = 1u << (g->imu->sens_avg & ADIS_IMU_SENS_AVG_M_MASK);
+    const uint32_t taps = 1u << settings(g).taps_log2;
     bool ok = true;
     unsigned i;
     if (v->n < 2u) {
@@ -546,7 +561,7 @@ static int run_autonull(struct gyrocal *g, struct gyrocal_result *res, enum adis
         /* the part nulls its filter output: the last 2 N - 1 samples, N = 64 */
         const uint64_t span = (uint64_t)(2u * (1u << GYROCAL_AUTONULL_M) - 1u) *
                               adis_imu_current_period_ns(g->imu);
-        res->t_avg_end_ns = hal_now_ns(g->imu->cfg.hal);
+        res->t_avg_end_ns = now_ns(g);
         res->t_avg_start_ns = res->t_avg_end_ns > span ? res->t_avg_end_ns - span : 0u;
         err = adis_imu_command(g->imu, ADIS_IMU_CMD_AUTONULL);
         still_restart_window(&g->still);
@@ -593,18 +608,284 @@ static int run_manual_average(struct gyrocal *g, struct gyrocal_result *res, str
     return err;
 }
 
+/* ---- one run, in phases ------------------------------------------------------------------- */
+
+/* What the phases of one run share. */
+struct run {
+    enum gyrocal_mode mode;
+    enum adis_imu_range range;
+    unsigned k;      /* offset counts per output count */
+    uint8_t prd;     /* SMPL_PRD at the start (put back at the end) */
+    uint16_t avg;    /* SENS_AVG at the start */
+    uint32_t m0;     /* motion count when the gate passed */
+    int16_t corr[3]; /* processor-side correction after the run */
+    bool corr_valid; /* it is in force */
+    bool manual_reg; /* the registers are written (every mode but MANUAL to the processor) */
+    struct sums a;   /* MANUAL: the average */
+};
+
+/*
+ * Each phase returns true when the run goes on, false when it has ended: *err then holds the
+ * run's return code and *res is finished.
+ */
+
+/* Check the mode and the range, save the settings and the old offsets. */
+static bool run_prepare(struct gyrocal *g, enum gyrocal_mode mode, struct run *r,
+                        struct gyrocal_result *res, int *err)
+{
+    const struct adis_imu_settings st = settings(g);
+    uint32_t lsb_udps;
+    unsigned i;
+    if ((unsigned)mode >= (unsigned)GYROCAL_MODES) {
+        *err = finish(g, res, GYROCAL_FAILED_DEVICE, INC_ERR_INVAL);
+        return false;
+    }
+    r->mode = mode;
+    r->range = adis_imu_gyro_range(g->imu);
+    if (range_scale(r->range, &lsb_udps, &r->k) != INC_OK) {
+        *err = finish(g, res, GYROCAL_FAILED_DEVICE, INC_ERR_INVAL);
+        return false;
+    }
+    r->prd = st.smpl_prd;
+    r->avg = st.sens_avg;
+    *err = read_offsets(g, res->old_offset);
+    if (*err != INC_OK) {
+        *err = finish(g, res, GYROCAL_FAILED_DEVICE, *err);
+        return false;
+    }
+    for (i = 0; i < 3u; i++) {
+        res->new_offset[i] = res->old_offset[i];
+        r->corr[i] = res->proc_corr[i];
+    }
+    r->corr_valid = g->corr.valid;
+    r->manual_reg = mode != GYROCAL_MANUAL || g->cfg.manual_to_register;
+    return true;
+}
+
+/* Gate: at rest now (every mode), thermally settled (MANUAL may wait for it first). */
+static bool run_gate(struct gyrocal *g, struct run *r, struct gyrocal_result *res, int *err)
+{
+    if (!still_at_rest(&g->still)) {
+        *err = finish(g, res, GYROCAL_REFUSED_MOVING, INC_ERR_MOTION);
+        return false;
+    }
+    if (r->mode == GYROCAL_MANUAL && !still_thermal_settled(&g->thermal)) {
+        struct adis_imu_sample s;
+        const uint64_t deadline = res->t_start_ns + (uint64_t)g->cfg.settle_timeout_ms * 1000000u;
+        *err = adis_imu_set_sample_period(g->imu, 0x01u);
+        while (*err == INC_OK && !still_thermal_settled(&g->thermal) && now_ns(g) < deadline) {
+            *err = read_feed(g, &s, &res->missed);
+        }
+        if (*err != INC_OK) {
+            (void)restore_settings(g, r->prd, r->avg);
+            *err = finish(g, res, GYROCAL_FAILED_DEVICE, *err);
+            return false;
+        }
+        if (!still_thermal_settled(&g->thermal) || !still_at_rest(&g->still)) {
+            *err = restore_settings(g, r->prd, r->avg);
+            if (*err != INC_OK) {
+                *err = finish(g, res, GYROCAL_FAILED_DEVICE, *err);
+            } else {
+                *err = still_at_rest(&g->still)
+                           ? finish(g, res, GYROCAL_REFUSED_THERMAL, INC_ERR_THERMAL)
+                           : finish(g, res, GYROCAL_REFUSED_MOVING, INC_ERR_MOTION);
+            }
+            return false;
+        }
+    }
+    if (!still_thermal_settled(&g->thermal)) {
+        *err = finish(g, res, GYROCAL_REFUSED_THERMAL, INC_ERR_THERMAL);
+        return false;
+    }
+    r->m0 = still_motion_count(&g->still);
+    return true;
+}
+
+/* PRECISION: the part averages 30 s at its own settings and is busy meanwhile: no sample can be
+ * read, so motion in that time shows only in the verification. */
+static bool step_precision(struct gyrocal *g, struct run *r, struct gyrocal_result *res, int *err)
+{
+    enum gyrocal_reason why = GYROCAL_DONE;
+    *err = close_window(g, &res->missed);
+    if (*err == INC_OK) {
+        why = during(g, r->m0);
+    }
+    if (why != GYROCAL_DONE) {
+        *err = finish(g, res, why, reason_err(why));
+        return false;
+    }
+    if (*err == INC_OK) {
+        res->t_avg_start_ns = now_ns(g);
+        res->t_avg_end_ns = res->t_avg_start_ns +
+                            (uint64_t)ADIS_IMU_PRECISION_AUTONULL_MS * 1000000u;
+        *err = adis_imu_command(g->imu, ADIS_IMU_CMD_PRECISION_AUTONULL);
+        still_restart_window(&g->still); /* samples before the 30 s gap: not one window */
+    }
+    return true;
+}
+
+/* MANUAL: the average at 819.2 SPS; nothing is written yet. */
+static bool step_manual(struct gyrocal *g, struct run *r, struct gyrocal_result *res, int *err)
+{
+    enum gyrocal_reason why = GYROCAL_DONE;
+    *err = adis_imu_set_sample_period(g->imu, 0x01u);
+    if (*err == INC_OK) {
+        *err = run_manual_average(g, res, &r->a, r->m0, &why);
+    }
+    if (*err == INC_OK && why != GYROCAL_DONE) {
+        /* nothing written yet: the old offsets are still in place */
+        *err = restore_settings(g, r->prd, r->avg);
+        *err = *err != INC_OK ? finish(g, res, GYROCAL_FAILED_DEVICE, *err)
+                              : finish(g, res, why, reason_err(why));
+        return false;
+    }
+    return true;
+}
+
+/* The procedure of the mode; a driver error puts back what can be put back. */
+static bool run_step(struct gyrocal *g, struct run *r, struct gyrocal_result *res, int *err)
+{
+    switch (r->mode) {
+    case GYROCAL_AUTONULL:
+        *err = run_autonull(g, res, r->range, r->prd, r->avg, r->m0);
+        if (res->reason != GYROCAL_DONE) {
+            return false; /* aborted inside, already restored */
+        }
+        break;
+    case GYROCAL_PRECISION:
+        if (!step_precision(g, r, res, err)) {
+            return false;
+        }
+        break;
+    default:
+        if (!step_manual(g, r, res, err)) {
+            return false;
+        }
+        break;
+    }
+    if (*err != INC_OK) {
+        *err = fail_restore(g, res, *err, r->prd, r->avg);
+        return false;
+    }
+    return true;
+}
+
+/* MANUAL: the new offsets and the processor-side correction from the average, and their
+ * residual estimates; the registers written when the run writes them. */
+static int apply_manual(struct gyrocal *g, struct run *r, struct gyrocal_result *res)
+{
+    const uint32_t taps = 1u << settings(g).taps_log2;
+    unsigned i;
+    for (i = 0; i < 3u; i++) {
+        const int32_t d = -fx_div64(r->a.s[i] * (int64_t)r->k, r->a.n);            /* -80 x mean */
+        const int32_t total = -fx_div64(r->a.s[i] * (int64_t)(4u * r->k), r->a.n); /* -320 x */
+        int32_t fine = total;
+        int32_t se;
+        res->mean_q16[i] = mean_q16(&r->a, i, r->k);
+        if (r->manual_reg) {
+            int32_t nv = res->old_offset[i] + d;
+            if (nv > ADIS_IMU_GYRO_OFF_MAX || nv < ADIS_IMU_GYRO_OFF_MIN) {
+                nv = nv > 0 ? ADIS_IMU_GYRO_OFF_MAX : ADIS_IMU_GYRO_OFF_MIN;
+                res->saturated[i] = true;
+            }
+            res->new_offset[i] = nv;
+            /* what the register did not take: 4 units of 1/320 per register count */
+            fine = total - 4 * (nv - res->old_offset[i]);
+        }
+        if (fine > INT16_MAX || fine < INT16_MIN) {
+            fine = fine > 0 ? INT16_MAX : INT16_MIN;
+            res->proc_saturated[i] = true;
+        }
+        r->corr[i] = (int16_t)fine;
+        se = se_q16(&r->a, i, r->k, taps);
+        /* resolution of what is applied without the application's help: the register when
+         * writing it, the 1/320 deg/s correction otherwise */
+        res->residual_q16[i] = residual_q16(
+            se > g->cfg.adev_q16[GYROCAL_MANUAL] ? se : g->cfg.adev_q16[GYROCAL_MANUAL],
+            r->manual_reg ? Q16_PER_OFF_LSB : Q16_PER_PROC_LSB);
+    }
+    r->corr_valid = true;
+    if (r->manual_reg) {
+        const int err = write_offsets(g, res->new_offset);
+        if (err != INC_OK) {
+            return err;
+        }
+        still_restart_window(&g->still); /* the output steps here */
+    }
+    return restore_settings(g, r->prd, r->avg);
+}
+
+/* AUTONULL / PRECISION: the part wrote its offsets; read them back. */
+static int apply_register(struct gyrocal *g, struct run *r, struct gyrocal_result *res)
+{
+    const int err = read_offsets(g, res->new_offset);
+    unsigned i;
+    for (i = 0; i < 3u; i++) {
+        res->saturated[i] = at_limit(res->new_offset[i]);
+        res->residual_q16[i] = residual_q16(g->cfg.adev_q16[r->mode], Q16_PER_OFF_LSB);
+        /* a processor-side correction in force belongs to the old register values */
+        r->corr[i] = 0;
+    }
+    r->corr_valid = false;
+    return err;
+}
+
+/* New offsets / correction and the residual estimate. */
+static bool run_apply(struct gyrocal *g, struct run *r, struct gyrocal_result *res, int *err)
+{
+    unsigned i;
+    *err = r->mode == GYROCAL_MANUAL ? apply_manual(g, r, res) : apply_register(g, r, res);
+    if (*err != INC_OK) {
+        *err = fail_restore(g, res, *err, r->prd, r->avg);
+        return false;
+    }
+    for (i = 0; i < 3u; i++) {
+        res->proc_corr[i] = r->corr[i];
+    }
+    return true;
+}
+
+/* After: the window spanning the end judged, the corrected output verified, the flash updated
+ * and the correction put in force. Returns the run's code. */
+static int run_verify(struct gyrocal *g, struct run *r, struct gyrocal_result *res)
+{
+    struct sums v;
+    enum gyrocal_reason why;
+    unsigned i;
+    int err = post_read(g, &v, &res->missed);
+    if (err != INC_OK) {
+        return fail_restore(g, res, err, r->prd, r->avg);
+    }
+    why = during(g, r->m0);
+    if (why != GYROCAL_DONE) {
+        return abort_restore(g, res, why, r->prd, r->avg);
+    }
+    if (!verify(g, &v, r->k, r->corr, r->corr_valid, res)) {
+        return abort_restore(g, res, GYROCAL_ABORTED_VERIFY, r->prd, r->avg);
+    }
+    if (g->cfg.flash_update && r->manual_reg) {
+        /* GLOB_CMD[3]: the bit (DIN 0xBE08), not [ADI-IMU-QS]'s 0xBE04. */
+        err = adis_imu_command(g->imu, ADIS_IMU_CMD_FLASH_UPDATE);
+        if (err != INC_OK) {
+            return fail_restore(g, res, err, r->prd, r->avg);
+        }
+    }
+    for (i = 0; i < 3u; i++) {
+        g->corr.corr[i] = r->corr[i];
+    }
+    g->corr.valid = r->corr_valid;
+    for (i = 0; i < 3u; i++) {
+        if (res->saturated[i] || res->proc_saturated[i]) {
+            return finish(g, res, GYROCAL_SATURATED, INC_ERR_RANGE);
+        }
+    }
+    return finish(g, res, GYROCAL_DONE, INC_OK);
+}
+
 int gyrocal_run(struct gyrocal *g, enum gyrocal_mode mode, struct gyrocal_result *res)
 {
-    struct sums a, v;
-    enum adis_imu_range range;
-    enum gyrocal_reason why = GYROCAL_DONE;
-    uint32_t lsb_udps, m0;
-    unsigned k, i;
-    uint8_t prd;
-    uint16_t avg;
-    int16_t corr[3];
-    bool corr_valid, manual_reg;
-    int err;
+    struct run r;
+    int err = INC_OK;
     if (g == NULL || res == NULL) {
         return INC_ERR_NULL;
     }
@@ -612,185 +893,9 @@ int gyrocal_run(struct gyrocal *g, enum gyrocal_mode mode, struct gyrocal_result
         return INC_ERR_STATE;
     }
     result_start(g, mode, res);
-    if ((unsigned)mode >= (unsigned)GYROCAL_MODES) {
-        return finish(g, res, GYROCAL_FAILED_DEVICE, INC_ERR_INVAL);
+    if (run_prepare(g, mode, &r, res, &err) && run_gate(g, &r, res, &err) &&
+        run_step(g, &r, res, &err) && run_apply(g, &r, res, &err)) {
+        err = run_verify(g, &r, res);
     }
-    range = adis_imu_gyro_range(g->imu);
-    if (range_scale(range, &lsb_udps, &k) != INC_OK) {
-        return finish(g, res, GYROCAL_FAILED_DEVICE, INC_ERR_INVAL);
-    }
-    prd = (uint8_t)g->imu->smpl_prd;
-    avg = g->imu->sens_avg;
-    err = read_offsets(g, res->old_offset);
-    if (err != INC_OK) {
-        return finish(g, res, GYROCAL_FAILED_DEVICE, err);
-    }
-    for (i = 0; i < 3u; i++) {
-        res->new_offset[i] = res->old_offset[i];
-        corr[i] = res->proc_corr[i];
-    }
-    corr_valid = g->corr.valid;
-    manual_reg = mode != GYROCAL_MANUAL || g->cfg.manual_to_register;
-
-    /* Gate: at rest now (every mode), thermally settled (MANUAL may wait for it first). */
-    if (!still_at_rest(&g->still)) {
-        return finish(g, res, GYROCAL_REFUSED_MOVING, INC_ERR_MOTION);
-    }
-    if (mode == GYROCAL_MANUAL && !still_thermal_settled(&g->thermal)) {
-        struct adis_imu_sample s;
-        const uint64_t deadline = res->t_start_ns + (uint64_t)g->cfg.settle_timeout_ms * 1000000u;
-        err = adis_imu_set_sample_period(g->imu, 0x01u);
-        while (err == INC_OK && !still_thermal_settled(&g->thermal) &&
-               hal_now_ns(g->imu->cfg.hal) < deadline) {
-            err = read_feed(g, &s, &res->missed);
-        }
-        if (err != INC_OK) {
-            (void)restore_settings(g, prd, avg);
-            return finish(g, res, GYROCAL_FAILED_DEVICE, err);
-        }
-        if (!still_thermal_settled(&g->thermal) || !still_at_rest(&g->still)) {
-            err = restore_settings(g, prd, avg);
-            if (err != INC_OK) {
-                return finish(g, res, GYROCAL_FAILED_DEVICE, err);
-            }
-            return still_at_rest(&g->still)
-                       ? finish(g, res, GYROCAL_REFUSED_THERMAL, INC_ERR_THERMAL)
-                       : finish(g, res, GYROCAL_REFUSED_MOVING, INC_ERR_MOTION);
-        }
-    }
-    if (!still_thermal_settled(&g->thermal)) {
-        return finish(g, res, GYROCAL_REFUSED_THERMAL, INC_ERR_THERMAL);
-    }
-    m0 = still_motion_count(&g->still);
-
-    /* The procedure. */
-    switch (mode) {
-    case GYROCAL_AUTONULL:
-        err = run_autonull(g, res, range, prd, avg, m0);
-        if (res->reason != GYROCAL_DONE) {
-            return err; /* aborted inside, already restored */
-        }
-        break;
-    case GYROCAL_PRECISION:
-        /* The part averages 30 s at its own settings and is busy meanwhile: no sample can be
-         * read, so motion in that time shows only in the verification. */
-        err = close_window(g, &res->missed);
-        if (err == INC_OK) {
-            why = during(g, m0); /* still GYROCAL_DONE from the start otherwise */
-        }
-        if (why != GYROCAL_DONE) {
-            return finish(g, res, why, reason_err(why));
-        }
-        if (err == INC_OK) {
-            res->t_avg_start_ns = hal_now_ns(g->imu->cfg.hal);
-            res->t_avg_end_ns = res->t_avg_start_ns +
-                                (uint64_t)ADIS_IMU_PRECISION_AUTONULL_MS * 1000000u;
-            err = adis_imu_command(g->imu, ADIS_IMU_CMD_PRECISION_AUTONULL);
-            still_restart_window(&g->still); /* samples before the 30 s gap: not one window */
-        }
-        break;
-    default:
-        err = adis_imu_set_sample_period(g->imu, 0x01u);
-        if (err == INC_OK) {
-            err = run_manual_average(g, res, &a, m0, &why);
-        }
-        if (err == INC_OK && why != GYROCAL_DONE) {
-            /* nothing written yet: the old offsets are still in place */
-            err = restore_settings(g, prd, avg);
-            if (err != INC_OK) {
-                return finish(g, res, GYROCAL_FAILED_DEVICE, err);
-            }
-            return finish(g, res, why, reason_err(why));
-        }
-        break;
-    }
-    if (err != INC_OK) {
-        return fail_restore(g, res, err, prd, avg);
-    }
-
-    /* New offsets / correction and the residual estimate. */
-    if (mode == GYROCAL_MANUAL) {
-        for (i = 0; i < 3u; i++) {
-            const int32_t d = -fx_div64(a.s[i] * (int64_t)k, a.n);            /* -80 x mean */
-            const int32_t total = -fx_div64(a.s[i] * (int64_t)(4u * k), a.n); /* -320 x mean */
-            int32_t fine = total;
-            int32_t se;
-            res->mean_q16[i] = mean_q16(&a, i, k);
-            if (manual_reg) {
-                int32_t nv = res->old_offset[i] + d;
-                if (nv > ADIS_IMU_GYRO_OFF_MAX || nv < ADIS_IMU_GYRO_OFF_MIN) {
-                    nv = nv > 0 ? ADIS_IMU_GYRO_OFF_MAX : ADIS_IMU_GYRO_OFF_MIN;
-                    res->saturated[i] = true;
-                }
-                res->new_offset[i] = nv;
-                /* what the register did not take: 4 units of 1/320 per register count */
-                fine = total - 4 * (nv - res->old_offset[i]);
-            }
-            if (fine > INT16_MAX || fine < INT16_MIN) {
-                fine = fine > 0 ? INT16_MAX : INT16_MIN;
-                res->proc_saturated[i] = true;
-            }
-            corr[i] = (int16_t)fine;
-            se = se_q16(&a, i, k, 1u << (g->imu->sens_avg & ADIS_IMU_SENS_AVG_M_MASK));
-            /* resolution of what is applied without the application's help: the register when
-             * writing it, the 1/320 deg/s correction otherwise */
-            res->residual_q16[i] = residual_q16(
-                se > g->cfg.adev_q16[GYROCAL_MANUAL] ? se : g->cfg.adev_q16[GYROCAL_MANUAL],
-                manual_reg ? Q16_PER_OFF_LSB : Q16_PER_PROC_LSB);
-        }
-        corr_valid = true;
-        if (manual_reg) {
-            err = write_offsets(g, res->new_offset);
-            if (err != INC_OK) {
-                return fail_restore(g, res, err, prd, avg);
-            }
-            still_restart_window(&g->still); /* the output steps here */
-        }
-        err = restore_settings(g, prd, avg);
-    } else {
-        err = read_offsets(g, res->new_offset);
-        for (i = 0; i < 3u; i++) {
-            res->saturated[i] = at_limit(res->new_offset[i]);
-            res->residual_q16[i] = residual_q16(g->cfg.adev_q16[mode], Q16_PER_OFF_LSB);
-            /* a processor-side correction in force belongs to the old register values */
-            corr[i] = 0;
-        }
-        corr_valid = false;
-    }
-    if (err != INC_OK) {
-        return fail_restore(g, res, err, prd, avg);
-    }
-    for (i = 0; i < 3u; i++) {
-        res->proc_corr[i] = corr[i];
-    }
-
-    /* After: the window spanning the end judged, and the corrected output verified. */
-    err = post_read(g, &v, &res->missed);
-    if (err != INC_OK) {
-        return fail_restore(g, res, err, prd, avg);
-    }
-    why = during(g, m0);
-    if (why != GYROCAL_DONE) {
-        return abort_restore(g, res, why, prd, avg);
-    }
-    if (!verify(g, &v, k, corr, corr_valid, res)) {
-        return abort_restore(g, res, GYROCAL_ABORTED_VERIFY, prd, avg);
-    }
-    if (g->cfg.flash_update && (mode != GYROCAL_MANUAL || manual_reg)) {
-        /* GLOB_CMD[3]: the bit (DIN 0xBE08), not [ADI-IMU-QS]'s 0xBE04. */
-        err = adis_imu_command(g->imu, ADIS_IMU_CMD_FLASH_UPDATE);
-        if (err != INC_OK) {
-            return fail_restore(g, res, err, prd, avg);
-        }
-    }
-    for (i = 0; i < 3u; i++) {
-        g->corr.corr[i] = corr[i];
-    }
-    g->corr.valid = corr_valid;
-    for (i = 0; i < 3u; i++) {
-        if (res->saturated[i] || res->proc_saturated[i]) {
-            return finish(g, res, GYROCAL_SATURATED, INC_ERR_RANGE);
-        }
-    }
-    return finish(g, res, GYROCAL_DONE, INC_OK);
+    return err;
 }

@@ -1,7 +1,8 @@
 /*
  * adis.h - the register protocol shared by the Analog Devices iSensor parts Inclino drives
  * (ADIS16250/16255 gyroscope, ADIS1636x/1640x IMUs). Family drivers build on it; it only sees
- * struct spi_dev frames.
+ * struct spi_dev frames. (Their data-ready edge counting is every driver's: struct sensor_dr,
+ * inclino/sensor.h.)
  *
  * Protocol (docs/sensor-facts.md §2.2, §3.1; ADIS16250/55 Rev B p. 11, ADIS1636x/1640x datasheets):
  *   - SPI mode 3, MSB first, 16-bit frames, CS toggled with the part's stall time between frames
@@ -72,38 +73,6 @@ uint16_t adis_field(uint16_t raw, unsigned bits);
  * Returns the count (the caller masks it to the register's width).
  */
 int32_t adis_offset_counts(int64_t num, uint32_t den, unsigned bits, bool *saturated);
-
-/*
- * Data-ready edges, counted in interrupt context and consumed by the driver (ADIS16255 and
- * ADIS1636x/1640x). The part pulses its data-ready line once per sample; the interrupt handler
- * only increments `count`, so an edge is never lost and edges the driver did not wait for are
- * counted (a missed sample is reported, not hidden). Unsigned wrap-around is harmless: only
- * count - taken is used.
- */
-struct adis_dr {
-    volatile uint32_t count; /* edges seen (written in interrupt context only) */
-    uint32_t taken;          /* count when the driver last consumed the edges */
-};
-
-/* Zero both counters (no interrupt may be attached yet). */
-void adis_dr_reset(struct adis_dr *dr);
-
-/* The interrupt handler to pass to hal_irq_attach, with arg = the struct adis_dr. */
-void adis_dr_isr(void *arg);
-
-/* Forget the edges seen so far (taken = count, in a critical section). */
-void adis_dr_sync(const struct hal *hal, struct adis_dr *dr);
-
-/*
- * Wait until at least one edge has come since the last consumption, or until the HAL clock
- * reaches deadline_ns. On an edge: consumes all pending edges, *pending (may be NULL) = their
- * number (>= 1; > 1 means samples were missed), INC_OK. At the deadline with no edge:
- * *pending = 0, INC_ERR_TIMEOUT. An edge that arrives exactly at the deadline is taken. Between
- * checks it sleeps in hal_irq_wait, which may return at any attached interrupt (another part's
- * too): it looks again either way.
- */
-int adis_dr_wait(const struct hal *hal, struct adis_dr *dr, uint64_t deadline_ns,
-                 uint32_t *pending);
 
 #ifdef __cplusplus
 }

@@ -29,35 +29,15 @@
 #include "inclino/adis.h"
 #include "inclino/error.h"
 #include "inclino/hal.h"
+#include "inclino/sensor.h"
 #include "inclino/spi.h"
 
 #ifdef __cplusplus
 extern "C" {
 #endif
 
-/* ------------------------------------------------------------------ register map (§2.3) */
-/* Lower (even) byte addresses; the upper byte is addr + 1. 6-bit addresses. */
-#define ADIS16255_REG_ENDURANCE 0x00u  /* flash write counter, 16-bit, no ND/EA */
-#define ADIS16255_REG_SUPPLY_OUT 0x02u /* 12-bit binary, 1.8315 mV/LSB */
-#define ADIS16255_REG_GYRO_OUT 0x04u   /* 14-bit two's complement */
-#define ADIS16255_REG_AUX_ADC 0x0Au    /* 12-bit binary, 0.6105 mV/LSB */
-#define ADIS16255_REG_TEMP_OUT 0x0Cu   /* 12-bit two's complement, 0.1453 °C/LSB, 0 = 25 °C */
-#define ADIS16255_REG_ANGL_OUT 0x0Eu   /* 14-bit angle [U] format and scale */
-#define ADIS16255_REG_GYRO_OFF 0x14u   /* 12-bit two's complement offset [U] LSB */
-#define ADIS16255_REG_GYRO_SCALE 0x16u /* 12-bit unsigned, 0x0800 = x1.0 */
-#define ADIS16255_REG_ALM_MAG1 0x20u
-#define ADIS16255_REG_ALM_MAG2 0x22u
-#define ADIS16255_REG_ALM_SMPL1 0x24u
-#define ADIS16255_REG_ALM_SMPL2 0x26u
-#define ADIS16255_REG_ALM_CTRL 0x28u
-#define ADIS16255_REG_AUX_DAC 0x30u
-#define ADIS16255_REG_GPIO_CTRL 0x32u
-#define ADIS16255_REG_MSC_CTRL 0x34u
-#define ADIS16255_REG_SMPL_PRD 0x36u /* bit 7 time base, bits 6..0 NS; 8-bit register */
-#define ADIS16255_REG_SENS_AVG 0x38u /* range and filter, [U] layout (below) */
-#define ADIS16255_REG_SLP_CNT 0x3Au
-#define ADIS16255_REG_STATUS 0x3Cu
-#define ADIS16255_REG_COMMAND 0x3Eu /* 8-bit register, write only */
+/* Register addresses, MSC_CTRL and COMMAND bits: private to the driver (drivers/adis16255/
+ * adis16255_regs.h); the white-box tests of tests/adis16255 include it. */
 
 /* Output register widths. */
 #define ADIS16255_GYRO_BITS 14u
@@ -89,15 +69,6 @@ extern "C" {
 #define ADIS16255_FILTER_M_MIN_160 2u
 #define ADIS16255_FILTER_M_MIN_80 4u
 
-/* MSC_CTRL (§2.3). */
-#define ADIS16255_MSC_DR_LINE 0x0001u     /* data-ready line: 0 = DIO0, 1 = DIO1 [U] */
-#define ADIS16255_MSC_DR_POL_HIGH 0x0002u /* data-ready active high */
-#define ADIS16255_MSC_DR_EN 0x0004u       /* data-ready enable */
-#define ADIS16255_MSC_ST_POS 0x0100u      /* manual self-test, positive */
-#define ADIS16255_MSC_ST_NEG 0x0200u      /* manual self-test, negative */
-#define ADIS16255_MSC_ST_INT 0x0400u      /* internal self-test; clears itself when done */
-#define ADIS16255_MSC_DEFINED 0x0707u     /* bits the driver knows; the rest read 0 */
-
 /* STATUS (§2.3). */
 #define ADIS16255_STATUS_SUPPLY_LOW 0x0001u  /* supply < 4.75 V */
 #define ADIS16255_STATUS_SUPPLY_HIGH 0x0002u /* supply > 5.25 V */
@@ -109,13 +80,6 @@ extern "C" {
 #define ADIS16255_STATUS_ALARM1 0x0100u
 #define ADIS16255_STATUS_ALARM2 0x0200u
 #define ADIS16255_STATUS_DEFINED 0x037Fu /* any other bit set: not a STATUS word (bus fault) */
-
-/* COMMAND (§2.3). */
-#define ADIS16255_CMD_AUTONULL 0x01u
-#define ADIS16255_CMD_FACTORY_RESTORE 0x02u
-#define ADIS16255_CMD_DAC_LATCH 0x04u
-#define ADIS16255_CMD_FLASH_UPDATE 0x08u
-#define ADIS16255_CMD_RESET 0x80u
 
 /* ------------------------------------------------------------------ timing (§2.2) */
 /*
@@ -229,17 +193,19 @@ struct adis16255_sample {
 /* Driver state: caller-allocated (static), one per part. Fields are read-only to the caller. */
 struct adis16255 {
     struct adis16255_cfg cfg;
-    struct spi_dev dev;
+    struct spi_dev spi;
     uint16_t smpl_prd; /* configuration written to the part (read-back checked) */
     uint16_t sens_avg;
     uint16_t msc_ctrl;
     bool fast;              /* SCLK/stall for >= 64 SPS in use */
     uint64_t busy_until_ns; /* the part is busy with a command the driver issued */
-    struct adis_dr dr;      /* data-ready edges seen and consumed (wait_sample) */
+    struct sensor_dr dr;    /* data-ready edges seen and consumed (wait_sample) */
     bool dr_attached;
-    bool initialised;
+    bool ready;
     enum adis16255_id_check id_check; /* the identity check that failed at init */
     struct adis16255_status status;   /* the last STATUS read (EA, self-test, init) */
+    uint32_t bus_errors;              /* calls that ended in INC_ERR_BUS */
+    uint32_t sensor_missed;           /* sensor ops: samples lost since the last one handed out */
 };
 
 /* ------------------------------------------------------------------ pure functions */
@@ -252,21 +218,21 @@ struct adis16255 {
  * <= 0.5 LSB of Q16.16 (7.6e-6 °/s). Range ±600.1 °/s (±320), no saturation needed.
  * Returns 0, INC_ERR_NULL, or INC_ERR_INVAL (range not 1, 2 or 4; *dps_q16 = 0).
  */
-int adis16255_gyro_dps_q16(uint16_t word, enum adis16255_range range, int32_t *dps_q16);
+int adis16255_gyro_dps_from_word(uint16_t word, enum adis16255_range range, int32_t *dps_q16);
 
 /*
  * TEMP_OUT word -> Q16.16 °C: 25 + n * 0.1453, n the 12-bit two's complement count.
  * Exact rational math (0.1453 * 65536 = 9522 + 238/625), rounded to nearest (625 is odd: no
  * ties); error <= 0.5 LSB of Q16.16. Range -272.6 .. +322.4 °C. Total function.
  */
-int32_t adis16255_temp_c_q16(uint16_t word);
+int32_t adis16255_temp_c_from_word(uint16_t word);
 
 /*
  * SUPPLY_OUT word -> Q16.16 V: n * 1.8315 mV, n the 12-bit unsigned count. Exact
  * (1.8315e-3 * 65536 = 120 + 2280/78125), rounded to nearest (no ties); error <= 0.5 LSB of
  * Q16.16. Range 0 .. 7.5 V. Total function.
  */
-int32_t adis16255_supply_v_q16(uint16_t word);
+int32_t adis16255_supply_v_from_word(uint16_t word);
 
 /*
  * ANGL_OUT word -> Q16.16 °: n * 10/273 ° (0.03663 °/LSB, the Linux ADIS16260 value [U] for this
@@ -274,19 +240,19 @@ int32_t adis16255_supply_v_q16(uint16_t word);
  * 600.1°; use differences modulo 2^14 for relative angles). round(n * 655360 / 273), no ties,
  * error <= 0.5 LSB of Q16.16. Range 0 .. 600.1 °. Total function.
  */
-int32_t adis16255_angle_deg_q16(uint16_t word);
+int32_t adis16255_angle_deg_from_word(uint16_t word);
 
 /*
  * GYRO_OFF [U] format: 12-bit two's complement (Linux), LSB 5/273 °/s (0.01832, the ±80 range
  * LSB, independent of the range setting) [U]; full scale -37.51 .. +37.49 °/s.
- * adis16255_gyro_off_from_dps_q16: rate offset (Q16.16 °/s, any int32) -> register word
+ * adis16255_gyro_off_word_from_dps: rate offset (Q16.16 °/s, any int32) -> register word
  * (low 12 bits, two's complement), rounded to nearest, ties away from zero; values outside the
  * 12-bit range saturate to -2048/+2047 and *saturated = true. Error <= 0.5 LSB (0.00916 °/s)
  * when not saturated. Returns 0 or INC_ERR_NULL.
  */
-int adis16255_gyro_off_from_dps_q16(int32_t dps_q16, uint16_t *word, bool *saturated);
+int adis16255_gyro_off_word_from_dps(int32_t dps_q16, uint16_t *word, bool *saturated);
 /* GYRO_OFF word -> Q16.16 °/s (exact to <= 0.5 LSB of Q16.16, no ties). Total function. */
-int32_t adis16255_gyro_off_dps_q16(uint16_t word);
+int32_t adis16255_gyro_off_dps_from_word(uint16_t word);
 
 /* Sample period in us for a SMPL_PRD value: TB * (NS + 1), TB = 1953 or 60540 us. */
 uint32_t adis16255_sample_period_us(uint8_t smpl_prd);
@@ -312,53 +278,60 @@ const char *adis16255_status_bit_name(unsigned bit);
  * until the sample rate is known), optional software reset, identity plausibility (one
  * pipelined read of SUPPLY_OUT, GYRO_SCALE, SENS_AVG, SMPL_PRD, MSC_CTRL, then STATUS on its
  * own, which clears its latched bits): INC_ERR_BUS for all-ones/all-zeros (no device, MISO
- * stuck), INC_ERR_ID for implausible contents (st->id_check says which); write SMPL_PRD,
+ * stuck), INC_ERR_ID for implausible contents (dev->id_check says which); write SMPL_PRD,
  * SENS_AVG, MSC_CTRL and read them back (INC_ERR_ID on mismatch); select SCLK/stall for the
  * rate; optional self-test (else the pending outputs are discarded); read STATUS again: any bit
- * set -> INC_ERR_DEVICE with st->status; attach the data-ready interrupt. On error st is not
+ * set -> INC_ERR_DEVICE with dev->status; attach the data-ready interrupt. On error st is not
  * usable (every other call returns INC_ERR_STATE). docs/drivers-adis16255.md, Init.
  */
-int adis16255_init(struct adis16255 *st, const struct adis16255_cfg *cfg);
+int adis16255_init(struct adis16255 *dev, const struct adis16255_cfg *cfg);
 
 /*
  * Read GYRO_OUT and TEMP_OUT in one pipelined sequence (3 frames). 0 and s->valid = true when
  * both are new and error-free. Otherwise s->valid = false, rate/temp = 0, raw words kept:
  *   INC_ERR_BUS    an all-ones word with a STATUS that is not one (reserved bits), or
  *                  all-zero stale words and SENS_AVG does not read back (MISO stuck/no device);
- *   INC_ERR_DEVICE EA set: STATUS read and decoded into s->status and st->status;
+ *   INC_ERR_DEVICE EA set: STATUS read and decoded into s->status and dev->status;
  *   INC_ERR_STALE  ND clear on either word (no new sample since the last read);
  *   bus errors from the SPI layer.
  */
-int adis16255_read_sample(struct adis16255 *st, struct adis16255_sample *s);
+int adis16255_read_sample(struct adis16255 *dev, struct adis16255_sample *s);
 
 /*
- * Wait for the next data-ready edge (hal_irq_wait), then adis16255_read_sample. timeout_us = 0
- * means 2 sample periods + ADIS16255_DR_MARGIN_US. An edge that came since the previous call
- * counts (none is lost). Timeout -> INC_ERR_TIMEOUT, s->valid = false, nothing read.
- * INC_ERR_STATE when no data-ready pin is configured/enabled.
+ * Wait for the next data-ready edge (hal_irq_wait), at most timeout_ns (0: 2 sample periods +
+ * ADIS16255_DR_MARGIN_US). An edge that came since the previous call counts (none is lost);
+ * *missed (may be NULL) = edges beyond one since the last consumed. INC_ERR_TIMEOUT when none
+ * came; INC_ERR_STATE when no data-ready pin is configured/enabled.
  */
-int adis16255_wait_sample(struct adis16255 *st, uint32_t timeout_us, struct adis16255_sample *s);
+int adis16255_wait_ready(struct adis16255 *dev, uint32_t timeout_ns, uint32_t *missed);
+
+/*
+ * adis16255_wait_ready, then adis16255_read_sample. timeout_us = 0 means 2 sample periods +
+ * ADIS16255_DR_MARGIN_US. Timeout -> INC_ERR_TIMEOUT, s->valid = false, nothing read.
+ * More than one edge since the previous sample sets ADIS16255_SAMPLE_OVERRUN.
+ */
+int adis16255_wait_sample(struct adis16255 *dev, uint32_t timeout_us, struct adis16255_sample *s);
 
 /* SUPPLY_OUT (Q16.16 V) / ANGL_OUT (Q16.16 °), with the same ND/EA/bus checks as a sample. On
  * error *out = 0. */
-int adis16255_read_supply(struct adis16255 *st, int32_t *v_q16);
-int adis16255_read_angle(struct adis16255 *st, int32_t *deg_q16);
+int adis16255_read_supply(struct adis16255 *dev, int32_t *v_q16);
+int adis16255_read_angle(struct adis16255 *dev, int32_t *deg_q16);
 
 /* Read and decode STATUS (clears its latched bits on the part [U]). INC_ERR_BUS when it is not
  * a STATUS word. */
-int adis16255_read_status(struct adis16255 *st, struct adis16255_status *out);
+int adis16255_read_diag(struct adis16255 *dev, struct adis16255_status *out);
 
 /* Change SMPL_PRD (and the SCLK/stall that follow from it); read-back checked. */
-int adis16255_set_sample_period(struct adis16255 *st, uint8_t smpl_prd);
+int adis16255_set_sample_period(struct adis16255 *dev, uint8_t smpl_prd);
 /* Change range and filter (SENS_AVG); read-back checked. */
-int adis16255_set_sens_avg(struct adis16255 *st, enum adis16255_range range, uint8_t filter_m);
+int adis16255_set_sens_avg(struct adis16255 *dev, enum adis16255_range range, uint8_t filter_m);
 
 /*
  * Write GYRO_OFF from a rate offset (Q16.16 °/s), saturating to the 12-bit range;
  * *saturated (may be NULL) tells whether it did. Read-back checked (INC_ERR_ID on mismatch).
  */
-int adis16255_set_gyro_offset(struct adis16255 *st, int32_t dps_q16, bool *saturated);
-int adis16255_get_gyro_offset(struct adis16255 *st, int32_t *dps_q16);
+int adis16255_set_gyro_offset(struct adis16255 *dev, int32_t dps_q16, bool *saturated);
+int adis16255_get_gyro_offset(struct adis16255 *dev, int32_t *dps_q16);
 
 /*
  * COMMAND, each blocking until the part is done. Before the command the driver waits out any
@@ -374,21 +347,38 @@ int adis16255_get_gyro_offset(struct adis16255 *st, int32_t *dps_q16);
  *   reset: ADIS16255_RESET_MS, then the driver's configuration is written again (the part
  *     reloads its flash copy) and read back.
  */
-int adis16255_autonull(struct adis16255 *st);
-int adis16255_factory_restore(struct adis16255 *st);
-int adis16255_flash_update(struct adis16255 *st);
-int adis16255_reset(struct adis16255 *st);
+int adis16255_autonull(struct adis16255 *dev);
+int adis16255_factory_restore(struct adis16255 *dev);
+int adis16255_flash_update(struct adis16255 *dev);
+int adis16255_reset(struct adis16255 *dev);
 
 /*
  * Internal self-test: set MSC_CTRL bit 10, wait ADIS16255_SELF_TEST_MS, poll until the bit
  * clears (INC_ERR_TIMEOUT after ADIS16255_SELF_TEST_TIMEOUT_MS), read STATUS: self-test error
- * -> INC_ERR_DEVICE with st->status. Outputs during the test are not valid; the driver
+ * -> INC_ERR_DEVICE with dev->status. Outputs during the test are not valid; the driver
  * discards the sample flags (reads GYRO_OUT/TEMP_OUT once) before returning.
  */
-int adis16255_self_test(struct adis16255 *st);
+int adis16255_self_test(struct adis16255 *dev);
 
 /* The default data-ready timeout for the configured rate, in us. */
-uint32_t adis16255_dr_timeout_us(const struct adis16255 *st);
+uint32_t adis16255_dr_timeout_us(const struct adis16255 *dev);
+
+/*
+ * The driver as a struct sensor (inclino/sensor.h); dev = struct adis16255, cfg of init =
+ * struct adis16255_cfg. The part is a single-axis gyro: its rate is gyro_dps[2], the sensor
+ * frame's z axis (the axis normal to the package top, docs/drivers-adis16255.md, "Sensor
+ * interface"); x and y are 0 and there is no accelerometer (no SENSOR_S_HAVE_ACCEL).
+ *   wait_ready  adis16255_wait_ready; edges missed are reported in the next sample's `missed`.
+ *   read        adis16255_read_sample: rate and TEMP_OUT; a stale sample counts as missed.
+ *               Saturation: GYRO_OUT at -8192 or 8191 sets SENSOR_S_GYRO_SAT_X << 2.
+ *   read_diag   STATUS mapped to SENSOR_D_*, raw = STATUS, supply_v = SUPPLY_OUT.
+ *   self_test   adis16255_self_test.
+ *   identity    family SENSOR_FAMILY_ADIS1625X, product 16255 (the part has no ID register: the
+ *               ADIS16250 cannot be told apart and is bound as 16255 too), the rest 0.
+ *   info        gyro full scale 80/160/320 deg/s from the configured range, no accelerometer,
+ *               rate from SMPL_PRD.
+ */
+extern const struct sensor_ops adis16255_sensor_ops;
 
 #ifdef __cplusplus
 }

@@ -34,6 +34,7 @@
 #include "inclino/adis.h"
 #include "inclino/error.h"
 #include "inclino/hal.h"
+#include "inclino/sensor.h"
 #include "inclino/spi.h"
 
 #ifdef __cplusplus
@@ -89,64 +90,12 @@ enum adis_imu_variant adis_imu_variant_from_prod_id(uint16_t id);
 const char *adis_imu_variant_name(enum adis_imu_variant v);
 
 /* ---------------------------------------------------------------------------------------------
- * Register map (docs/sensor-facts.md §3.2). Addresses are the even (low-byte) address of each 16-bit
- * register; the high byte is at address + 1. ADIS_IMU_REG_* exist on both families,
- * ADIS1636X_REG_* / ADIS1640X_REG_* only on that family.
+ * Register map: the addresses and the MSC_CTRL bits are the driver's business and live in its
+ * private adis_imu_regs.h (drivers/adis_imu, not on the include path of callers). A caller that
+ * reads a register by address (adis_imu_read_reg) names it through adis_imu_reg_map() /
+ * adis_imu_reg_find() below, or is a white-box test that includes the private header.
  * ------------------------------------------------------------------------------------------- */
-#define ADIS_IMU_REG_FLASH_CNT 0x00u  /* 16-bit flash write counter, read-only */
-#define ADIS_IMU_REG_SUPPLY_OUT 0x02u /* 12-bit (1636x) / 14-bit (1640x [U]) unsigned, 2.418 mV */
-#define ADIS_IMU_REG_XGYRO_OUT 0x04u  /* 14-bit two's complement, 0.05 deg/s at +-300 deg/s */
-#define ADIS_IMU_REG_YGYRO_OUT 0x06u
-#define ADIS_IMU_REG_ZGYRO_OUT 0x08u
-#define ADIS_IMU_REG_XACCL_OUT 0x0Au /* 14-bit two's complement, LSB per variant */
-#define ADIS_IMU_REG_YACCL_OUT 0x0Cu
-#define ADIS_IMU_REG_ZACCL_OUT 0x0Eu
-#define ADIS1636X_REG_XTEMP_OUT 0x10u /* 12-bit two's complement, 0.136 C, 0 = 25 C */
-#define ADIS1636X_REG_YTEMP_OUT 0x12u
-#define ADIS1636X_REG_ZTEMP_OUT 0x14u
-#define ADIS1636X_REG_AUX_ADC 0x16u   /* 12-bit unsigned, 805.8 uV */
-#define ADIS1640X_REG_XMAGN_OUT 0x10u /* 14-bit two's complement, 0.5 mgauss */
-#define ADIS1640X_REG_YMAGN_OUT 0x12u
-#define ADIS1640X_REG_ZMAGN_OUT 0x14u
-#define ADIS1640X_REG_TEMP_OUT 0x16u /* 12-bit two's complement, 0.14 C, 0 = 25 C */
-#define ADIS1640X_REG_AUX_ADC 0x18u  /* 12-bit unsigned, 805.8 uV */
-#define ADIS_IMU_REG_XGYRO_OFF 0x1Au /* 13-bit two's complement, 0.0125 deg/s [U width] */
-#define ADIS_IMU_REG_YGYRO_OFF 0x1Cu
-#define ADIS_IMU_REG_ZGYRO_OFF 0x1Eu
-#define ADIS_IMU_REG_XACCL_OFF 0x20u /* 12-bit two's complement, LSB [U] */
-#define ADIS_IMU_REG_YACCL_OFF 0x22u
-#define ADIS_IMU_REG_ZACCL_OFF 0x24u
-#define ADIS1636X_REG_ALM_MAG1 0x26u
-#define ADIS1636X_REG_ALM_MAG2 0x28u
-#define ADIS1636X_REG_ALM_SMPL1 0x2Au
-#define ADIS1636X_REG_ALM_SMPL2 0x2Cu
-#define ADIS1636X_REG_ALM_CTRL 0x2Eu
-#define ADIS1636X_REG_AUX_DAC 0x30u
-#define ADIS1640X_REG_XMAGN_HIF 0x26u /* magnetometer hard-iron correction */
-#define ADIS1640X_REG_YMAGN_HIF 0x28u
-#define ADIS1640X_REG_ZMAGN_HIF 0x2Au
-#define ADIS1640X_REG_XMAGN_SIF 0x2Cu /* magnetometer soft-iron correction, default 0x0800 */
-#define ADIS1640X_REG_YMAGN_SIF 0x2Eu
-#define ADIS1640X_REG_ZMAGN_SIF 0x30u
-#define ADIS_IMU_REG_GPIO_CTRL 0x32u
-#define ADIS_IMU_REG_MSC_CTRL 0x34u /* default 0x0006 */
-#define ADIS_IMU_REG_SMPL_PRD 0x36u /* default 0x0001 (819.2 SPS) */
-#define ADIS_IMU_REG_SENS_AVG 0x38u /* default 0x0402 */
-#define ADIS_IMU_REG_SLP_CNT 0x3Au
-#define ADIS_IMU_REG_DIAG_STAT 0x3Cu
-#define ADIS_IMU_REG_GLOB_CMD 0x3Eu /* write-only commands; 0x3E00 as a read = burst */
-#define ADIS1640X_REG_ALM_MAG1 0x40u
-#define ADIS1640X_REG_ALM_MAG2 0x42u
-#define ADIS1640X_REG_ALM_SMPL1 0x44u
-#define ADIS1640X_REG_ALM_SMPL2 0x46u
-#define ADIS1640X_REG_ALM_CTRL 0x48u
-#define ADIS1640X_REG_AUX_DAC 0x4Au
-#define ADIS1636X_REG_LOT_ID1 0x52u
-#define ADIS1636X_REG_LOT_ID2 0x54u
-#define ADIS_IMU_REG_PROD_ID 0x56u /* "PRODUCT_ID" on the 1640x */
-#define ADIS1636X_REG_SERIAL_NUM 0x58u
 
-#define ADIS_IMU_BURST_CMD 0x3E00u /* DIN that starts a burst read */
 
 /* Access of a register. */
 enum adis_imu_reg_access {
@@ -169,17 +118,6 @@ const struct adis_imu_reg_desc *adis_imu_reg_map(enum adis_imu_family f, size_t 
 /* The entry of one address (even), or NULL when the family has no register there. */
 const struct adis_imu_reg_desc *adis_imu_reg_find(enum adis_imu_family f, uint8_t addr);
 
-/* MSC_CTRL bits (docs/sensor-facts.md §3.4). */
-#define ADIS_IMU_MSC_DR_LINE_DIO2 0x0001u /* 1 = DIO2, 0 = DIO1 */
-#define ADIS_IMU_MSC_DR_POL_HIGH 0x0002u  /* 1 = active high */
-#define ADIS_IMU_MSC_DR_EN 0x0004u
-#define ADIS_IMU_MSC_ACCEL_ORIGIN 0x0040u
-#define ADIS_IMU_MSC_GYRO_G_COMP 0x0080u
-#define ADIS_IMU_MSC_ST_MANUAL_POS 0x0100u
-#define ADIS_IMU_MSC_ST_MANUAL_NEG 0x0200u
-#define ADIS_IMU_MSC_SELF_TEST 0x0400u /* internal self-test; clears itself when done */
-#define ADIS_IMU_MSC_MEM_TEST 0x0800u
-#define ADIS_IMU_MSC_DEFAULT 0x0006u
 
 /* GLOB_CMD bits (docs/sensor-facts.md §3.4); enum adis_imu_cmd values are these bits. */
 enum adis_imu_cmd {
@@ -289,55 +227,61 @@ enum adis_imu_range {
 #define ADIS_IMU_RANGE_75_MIN_M 4u
 
 /* ---------------------------------------------------------------------------------------------
- * Raw -> physical (pure, integer only). Every result is Q16.16 in int32_t (value x 65536),
- * computed as the exact rational and rounded to nearest, ties away from zero: the error against
- * exact math is <= 0.5 LSB of Q16.16 (2^-17) over the whole input range stated; nothing
+ * Raw -> physical (pure, integer only). One naming grammar in every driver:
+ * <driver>_<quantity>_<unit>_from_<input>; a total function returns the value, a fallible one
+ * returns 0 or a negative enum inc_err and writes the value through its last pointer (0 on error,
+ * never a plausible value with an error). Every physical result is Q16.16 in int32_t (value x
+ * 65536), computed as the exact rational and rounded to nearest, ties away from zero: the error
+ * against exact math is <= 0.5 LSB of Q16.16 (2^-17) over the whole input range stated; nothing
  * saturates inside it. Inputs are counts (already sign-extended/masked), e.g. from
- * struct adis_imu_sample.value.
+ * struct adis_imu_sample.counts.
  * ------------------------------------------------------------------------------------------- */
 /* Gyro, deg/s. counts in [-8192, 8191]; LSB 0.05 (300), 0.025 (150), 0.0125 (75) deg/s.
- * A range other than the three gives 0. Max |result| 409.6 deg/s. */
-int32_t adis_imu_gyro_dps_q16(int32_t counts, enum adis_imu_range range);
+ * Max |result| 409.6 deg/s. INC_ERR_NULL; INC_ERR_INVAL for a range other than the three. */
+int adis_imu_gyro_dps_from_counts(int32_t counts, enum adis_imu_range range, int32_t *dps_q16);
 /* Accelerometer, g. counts in [-8192, 8191]; lsb_ug from the variant (3333, 333, 1000) or any
- * 1..100000. Out-of-range lsb gives 0. */
-int32_t adis_imu_accel_g_q16(int32_t counts, uint32_t lsb_ug);
-/* Temperature, deg C: 25 + counts x 0.136 (1636x) or x 0.14 (1640x). counts in [-2048, 2047]. */
-int32_t adis_imu_temp_c_q16(int32_t counts, enum adis_imu_family f);
-/* Supply, V: counts x 2.418 mV. counts in [0, 16383]. */
-int32_t adis_imu_supply_v_q16(int32_t counts);
-/* Magnetometer, gauss: counts x 0.5 mgauss. counts in [-8192, 8191]. */
-int32_t adis_imu_magn_gauss_q16(int32_t counts);
-/* AUX_ADC, V: counts x 805.8 uV. counts in [0, 4095]. */
-int32_t adis_imu_aux_v_q16(int32_t counts);
+ * 1..100000 (else INC_ERR_INVAL). INC_ERR_NULL. */
+int adis_imu_accel_g_from_counts(int32_t counts, uint32_t lsb_ug, int32_t *g_q16);
+/* Temperature, deg C: 25 + counts x 0.136 (1636x) or x 0.14 (1640x). counts in [-2048, 2047].
+ * INC_ERR_NULL; INC_ERR_INVAL for another family. */
+int adis_imu_temp_c_from_counts(int32_t counts, enum adis_imu_family f, int32_t *c_q16);
+/* Supply, V: counts x 2.418 mV. counts in [0, 16383]. Total. */
+int32_t adis_imu_supply_v_from_counts(int32_t counts);
+/* Magnetometer, gauss: counts x 0.5 mgauss. counts in [-8192, 8191]. Total. */
+int32_t adis_imu_magn_gauss_from_counts(int32_t counts);
+/* AUX_ADC, V: counts x 805.8 uV. counts in [0, 4095]. Total. */
+int32_t adis_imu_aux_v_from_counts(int32_t counts);
 
 /*
  * User offsets. XGYRO_OFF: 13-bit two's complement [-4096, 4095] at 0.0125 deg/s (= 1/80 deg/s)
  * per LSB [U width: [ADI-IMU-QS] says 14-bit; docs/sensor-facts.md and ADI's example 13; 13 is used]. The
  * offset LSB is taken as independent of the gyro range [U].
  *
- * adis_imu_gyro_off_from_dps_q16: counts = round(dps x 80), ties away from zero, saturated to
- * [-4096, 4095]; *saturated (may be NULL) is set when the input was outside that range (beyond
- * -51.2 / +51.19375 deg/s after rounding). Input: any int32 Q16.16.
- * adis_imu_gyro_off_to_dps_q16: counts x 0.0125 in Q16.16 (exact rounding as above); counts
- * outside the 13-bit range are saturated first.
+ * adis_imu_gyro_off_counts_from_dps: counts = round(dps x 80), ties away from zero, saturated
+ * to [-4096, 4095]; *saturated (may be NULL) is set when the input was outside that range
+ * (beyond -51.2 / +51.19375 deg/s after rounding). Input: any int32 Q16.16. Total.
+ * adis_imu_gyro_off_dps_from_counts: counts x 0.0125 in Q16.16 (exact rounding as above); counts
+ * outside the 13-bit range are saturated first. Total.
  */
 #define ADIS_IMU_GYRO_OFF_BITS 13u
 #define ADIS_IMU_GYRO_OFF_MIN (-4096)
 #define ADIS_IMU_GYRO_OFF_MAX 4095
 #define ADIS_IMU_GYRO_OFF_PER_DPS 80 /* offset LSB per deg/s (1 / 0.0125) */
-int16_t adis_imu_gyro_off_from_dps_q16(int32_t dps_q16, bool *saturated);
-int32_t adis_imu_gyro_off_to_dps_q16(int32_t counts);
+int16_t adis_imu_gyro_off_counts_from_dps(int32_t dps_q16, bool *saturated);
+int32_t adis_imu_gyro_off_dps_from_counts(int32_t counts);
 
 /*
  * XACCL_OFF: 12-bit two's complement [-2048, 2047], LSB lsb_ug micro-g [U: the variant's output
  * LSB; ADI's example uses 1 mg on the ADIS16364]. From g Q16.16: round(g / lsb), ties away from
- * zero, saturated, *saturated set when clipped. lsb_ug in 1..100000 (else 0 and *saturated).
+ * zero, saturated, *saturated (may be NULL) set when clipped. Both are fallible: lsb_ug must be
+ * 1..100000 (else INC_ERR_INVAL, *counts / *g_q16 = 0); INC_ERR_NULL.
  */
 #define ADIS_IMU_ACCEL_OFF_BITS 12u
 #define ADIS_IMU_ACCEL_OFF_MIN (-2048)
 #define ADIS_IMU_ACCEL_OFF_MAX 2047
-int16_t adis_imu_accel_off_from_g_q16(int32_t g_q16, uint32_t lsb_ug, bool *saturated);
-int32_t adis_imu_accel_off_to_g_q16(int32_t counts, uint32_t lsb_ug);
+int adis_imu_accel_off_counts_from_g(int32_t g_q16, uint32_t lsb_ug, int16_t *counts,
+                                     bool *saturated);
+int adis_imu_accel_off_g_from_counts(int32_t counts, uint32_t lsb_ug, int32_t *g_q16);
 
 /* ---------------------------------------------------------------------------------------------
  * Samples
@@ -422,7 +366,7 @@ struct adis_imu_cfg {
 
 struct adis_imu {
     struct adis_imu_cfg cfg;
-    struct spi_dev dev;
+    struct spi_dev spi;
     const struct adis_imu_variant_info *info; /* the identified part (NULL until init passed) */
     uint16_t found_id;                        /* PROD_ID read at init (also when it was wrong) */
     uint8_t found_variant; /* enum adis_imu_variant of found_id, or ADIS_IMU_UNKNOWN */
@@ -439,9 +383,10 @@ struct adis_imu {
     uint16_t last_diag;     /* last DIAG_STAT read (it clears on read [U]) */
     uint16_t init_diag;     /* DIAG_STAT read at init (power-up flags), not an error */
     uint64_t busy_until_ns; /* the part ignores the bus until then */
-    struct adis_dr dr;      /* data-ready edges seen and consumed (wait_dr) */
+    struct sensor_dr dr;    /* data-ready edges seen and consumed (wait_dr) */
     /* statistics */
     uint32_t bursts, reg_reads, bus_errors, device_errors, stale_reads, timeouts;
+    uint32_t sensor_missed; /* sensor ops: samples lost since the last sample handed out */
 };
 
 /*
@@ -450,15 +395,15 @@ struct adis_imu {
  * MSC_CTRL, DIAG_STAT; SCLK/stall to the mode SMPL_PRD selects; data-ready (when dr_pin is set:
  * MSC_CTRL written, interrupt attached); optional self-test.
  * Errors: INC_ERR_NULL / INC_ERR_INVAL (cfg), INC_ERR_BUS (PROD_ID 0x0000 or 0xFFFF: no device,
- * MISO stuck), INC_ERR_ID (another PROD_ID: s->found_id holds it and s->found_variant names it
- * when it is a known part), INC_ERR_DEVICE (self-test failed: s->last_diag), a HAL/bus error.
- * On error s->ready is false and every other call returns INC_ERR_STATE.
+ * MISO stuck), INC_ERR_ID (another PROD_ID: dev->found_id holds it and dev->found_variant names it
+ * when it is a known part), INC_ERR_DEVICE (self-test failed: dev->last_diag), a HAL/bus error.
+ * On error dev->ready is false and every other call returns INC_ERR_STATE.
  */
-int adis_imu_init(struct adis_imu *s, const struct adis_imu_cfg *cfg);
+int adis_imu_init(struct adis_imu *dev, const struct adis_imu_cfg *cfg);
 
 /* The part found by init: PROD_ID and its variant (ADIS_IMU_UNKNOWN if none). Either may be
  * NULL. Valid after a successful init and after one that failed with INC_ERR_ID. */
-int adis_imu_found(const struct adis_imu *s, uint16_t *prod_id, enum adis_imu_variant *variant);
+int adis_imu_found(const struct adis_imu *dev, uint16_t *prod_id, enum adis_imu_variant *variant);
 
 /*
  * Burst read (DIN 0x3E00, 11 or 12 words in one CS period at <= 1 MHz; the device timing is
@@ -467,47 +412,47 @@ int adis_imu_found(const struct adis_imu *s, uint16_t *prod_id, enum adis_imu_va
  * INC_ERR_DEVICE (EA set in any word: out->diag holds DIAG_STAT, valid = 0), INC_ERR_STALE
  * (ND clear in some word: those channels are in out->stale and not in out->valid).
  */
-int adis_imu_read_burst(struct adis_imu *s, struct adis_imu_sample *out);
+int adis_imu_read_sample(struct adis_imu *dev, struct adis_imu_sample *out);
 
 /*
  * The same with pipelined register reads (n registers in n + 1 frames at the mode's SCLK, CS
  * toggled with the stall) for the channels in mask (ADIS_IMU_CH(...) bits; channels the part
  * lacks are ignored). Same errors; INC_ERR_INVAL for an empty mask.
  */
-int adis_imu_read_channels(struct adis_imu *s, uint16_t mask, struct adis_imu_sample *out);
+int adis_imu_read_channels(struct adis_imu *dev, uint16_t mask, struct adis_imu_sample *out);
 
 /* Convert the valid channels of a sample to physical units (gyro scale: the range recorded in
  * the sample, i.e. SENS_AVG as it was when the sample was read). */
-int adis_imu_to_phys(const struct adis_imu *s, const struct adis_imu_sample *in,
+int adis_imu_to_phys(const struct adis_imu *dev, const struct adis_imu_sample *in,
                      struct adis_imu_phys *out);
 
 /* Read any register of the map (the whole 16-bit word). INC_ERR_INVAL: not in the map or
  * write-only. Reading an output register clears its ND; reading DIAG_STAT clears it [U]. */
-int adis_imu_read_reg(struct adis_imu *s, uint8_t addr, uint16_t *value);
+int adis_imu_read_reg(struct adis_imu *dev, uint8_t addr, uint16_t *value);
 /* Write a read-write register of the map (low byte, then high byte). SMPL_PRD, SENS_AVG,
  * MSC_CTRL and GLOB_CMD have their own functions (they change the driver's state) and are
  * refused here with INC_ERR_INVAL, as are read-only registers. */
-int adis_imu_write_reg(struct adis_imu *s, uint8_t addr, uint16_t value);
+int adis_imu_write_reg(struct adis_imu *dev, uint8_t addr, uint16_t value);
 
 /*
  * Write SMPL_PRD[7:0]. The part changes mode with it; the driver waits the longer (low-power)
  * stall once and then uses the new mode's SCLK and stall.
  */
-int adis_imu_set_sample_period(struct adis_imu *s, uint8_t smpl_prd);
+int adis_imu_set_sample_period(struct adis_imu *dev, uint8_t smpl_prd);
 /* Sample period in ns of the current SMPL_PRD (for data-ready timeouts). */
-uint32_t adis_imu_current_period_ns(const struct adis_imu *s);
+uint32_t adis_imu_current_period_ns(const struct adis_imu *dev);
 
 /*
  * Write SENS_AVG: M = log2 of the taps per Bartlett stage (0..6) and the gyro range.
  * INC_ERR_INVAL for M > 6, an unknown range, or a range with fewer taps than it needs [U].
  */
-int adis_imu_set_filter(struct adis_imu *s, unsigned taps_log2, enum adis_imu_range range);
+int adis_imu_set_filter(struct adis_imu *dev, unsigned taps_log2, enum adis_imu_range range);
 /* The gyro range of the cached SENS_AVG (ADIS_IMU_RANGE_300 when its field is not one of the
  * three codes). */
-enum adis_imu_range adis_imu_gyro_range(const struct adis_imu *s);
+enum adis_imu_range adis_imu_gyro_range(const struct adis_imu *dev);
 
 /* Read (and so clear [U]) DIAG_STAT. INC_ERR_BUS when bit 7 (unused) is set: not a live part. */
-int adis_imu_read_diag(struct adis_imu *s, uint16_t *diag);
+int adis_imu_read_diag(struct adis_imu *dev, uint16_t *diag);
 
 /*
  * GLOB_CMD. adis_imu_command sends one command (one enum adis_imu_cmd) and waits its execution
@@ -516,31 +461,31 @@ int adis_imu_read_diag(struct adis_imu *s, uint16_t *diag);
  * SMPL_PRD, SENS_AVG and MSC_CTRL (flash values) and re-times the bus.
  * INC_ERR_INVAL for a value that is not one command.
  */
-int adis_imu_command(struct adis_imu *s, enum adis_imu_cmd cmd);
-int adis_imu_command_start(struct adis_imu *s, enum adis_imu_cmd cmd);
+int adis_imu_command(struct adis_imu *dev, enum adis_imu_cmd cmd);
+int adis_imu_command_start(struct adis_imu *dev, enum adis_imu_cmd cmd);
 /* Execution time the driver allows for cmd, in ms (0 for an unknown command). */
-uint32_t adis_imu_command_ms(const struct adis_imu *s, enum adis_imu_cmd cmd);
+uint32_t adis_imu_command_ms(const struct adis_imu *dev, enum adis_imu_cmd cmd);
 /* True while a started command is still executing (no bus access needed). */
-bool adis_imu_busy(const struct adis_imu *s);
+bool adis_imu_busy(const struct adis_imu *dev);
 /* Wait until no command is executing. */
-int adis_imu_wait_ready(struct adis_imu *s);
+int adis_imu_wait_idle(struct adis_imu *dev);
 
 /*
  * User offsets, in register counts (gyro 13-bit, accel 12-bit; see the conversions above).
  * axis 0..2 = x, y, z. Set: INC_ERR_RANGE when counts is outside the register (nothing is
  * written: saturate first with the conversion functions). Get: sign-extended.
  */
-int adis_imu_set_gyro_offset(struct adis_imu *s, unsigned axis, int32_t counts);
-int adis_imu_get_gyro_offset(struct adis_imu *s, unsigned axis, int32_t *counts);
-int adis_imu_set_accel_offset(struct adis_imu *s, unsigned axis, int32_t counts);
-int adis_imu_get_accel_offset(struct adis_imu *s, unsigned axis, int32_t *counts);
+int adis_imu_set_gyro_offset(struct adis_imu *dev, unsigned axis, int32_t counts);
+int adis_imu_get_gyro_offset(struct adis_imu *dev, unsigned axis, int32_t *counts);
+int adis_imu_set_accel_offset(struct adis_imu *dev, unsigned axis, int32_t counts);
+int adis_imu_get_accel_offset(struct adis_imu *dev, unsigned axis, int32_t *counts);
 
 /*
  * Data-ready: enable (MSC_CTRL[2]) on the given DIO line with the given polarity, attach the
  * interrupt on cfg.dr_pin (edge = the active edge); or disable and detach. INC_ERR_STATE when
  * cfg.dr_pin is HAL_PIN_NONE and enable is requested.
  */
-int adis_imu_dr_config(struct adis_imu *s, bool enable, enum adis_imu_dr_line line,
+int adis_imu_dr_config(struct adis_imu *dev, bool enable, enum adis_imu_dr_line line,
                        bool active_low);
 /*
  * Wait for the next data-ready edge (one that came since the last one consumed counts at once).
@@ -548,17 +493,61 @@ int adis_imu_dr_config(struct adis_imu *s, bool enable, enum adis_imu_dr_line li
  * data-ready); INC_ERR_STATE when data-ready is not configured. *missed (may be NULL) = edges
  * beyond one since the last consumed (samples the caller did not read).
  */
-int adis_imu_wait_dr(struct adis_imu *s, uint32_t timeout_ns, uint32_t *missed);
+int adis_imu_wait_ready(struct adis_imu *dev, uint32_t timeout_ns, uint32_t *missed);
 /* Forget data-ready edges not yet consumed (e.g. after a setting changed, to wait for a sample
  * taken with it). No bus access. */
-int adis_imu_dr_flush(struct adis_imu *s);
+int adis_imu_dr_flush(struct adis_imu *dev);
 
 /*
  * Internal self-test: set MSC_CTRL[10], wait the variant's self-test time, poll until the bit
  * clears (ADIS_IMU_SELF_TEST_POLLS x ADIS_IMU_SELF_TEST_POLL_MS, else INC_ERR_TIMEOUT), read
  * DIAG_STAT into *diag (may be NULL). INC_ERR_DEVICE when a self-test bit is set.
  */
-int adis_imu_self_test(struct adis_imu *s, uint16_t *diag);
+int adis_imu_self_test(struct adis_imu *dev, uint16_t *diag);
+
+/* ---------------------------------------------------------------------------------------------
+ * Settings in force and the sensor interface
+ * ------------------------------------------------------------------------------------------- */
+
+/* The driver's cached settings (no bus access). */
+struct adis_imu_settings {
+    uint8_t smpl_prd;  /* SMPL_PRD[7:0] */
+    uint16_t sens_avg; /* SENS_AVG as written or read (range code and M) */
+    uint8_t taps_log2; /* SENS_AVG M */
+    uint8_t range;     /* enum adis_imu_range of adis_imu_gyro_range() */
+    bool dr_enabled;   /* data-ready configured and attached */
+};
+/* INC_ERR_NULL; INC_ERR_STATE before a successful init (*out zeroed). */
+int adis_imu_get_settings(const struct adis_imu *dev, struct adis_imu_settings *out);
+/* The HAL the driver was initialised with (NULL before init or for NULL). */
+const struct hal *adis_imu_hal(const struct adis_imu *dev);
+
+/*
+ * The part's identity for struct sensor_identity: family SENSOR_FAMILY_ADIS163XX, product =
+ * PROD_ID in decimal (e.g. 16405), revision 0, and on the 1636x SERIAL_NUM, LOT_ID1 and LOT_ID2
+ * read from the part (the 1640x has none: 0). INC_ERR_NULL, INC_ERR_STATE, a bus error.
+ */
+int adis_imu_read_identity(struct adis_imu *dev, struct sensor_identity *out);
+
+/*
+ * The driver as a struct sensor (inclino/sensor.h); dev = struct adis_imu, cfg of init =
+ * struct adis_imu_cfg.
+ *   wait_ready  adis_imu_wait_ready (timeout 0: three sample periods); the edges missed are
+ *               kept and reported in the next sample's `missed`.
+ *   read        one burst (adis_imu_read_sample); a stale burst counts as a missed sample.
+ *               Accel (variant LSB), gyro (range in force) and temperature: TEMP_OUT on the
+ *               1640x, the mean of the three gyro temperatures on the 1636x (rounded, ties away
+ *               from zero). Saturation per axis: a count at -8192 or 8191 (14-bit ends).
+ *   read_diag   DIAG_STAT mapped to SENSOR_D_*, raw = DIAG_STAT, supply_v = SUPPLY_OUT (that
+ *               read clears SUPPLY_OUT's ND: a burst in the same sample period is then stale,
+ *               and sensor_next takes the next sample).
+ *   self_test   adis_imu_self_test; INC_ERR_DEVICE with the failing bits in out.
+ *   identity    adis_imu_read_identity.
+ *   info        accel full scale 8192 x LSB, gyro full scale 300/150/75 deg/s (range in force),
+ *               rate from SMPL_PRD.
+ * It needs data-ready configured (cfg.dr_pin): wait_ready returns INC_ERR_STATE otherwise.
+ */
+extern const struct sensor_ops adis_imu_sensor_ops;
 
 #ifdef __cplusplus
 }

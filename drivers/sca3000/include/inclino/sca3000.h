@@ -46,6 +46,7 @@
 
 #include "inclino/error.h"
 #include "inclino/hal.h"
+#include "inclino/sensor.h"
 #include "inclino/spi.h"
 
 #ifdef __cplusplus
@@ -63,38 +64,14 @@ enum sca3000_variant {
                           sca3000_init() rejects it with INC_ERR_UNSUPPORTED */
 };
 
-/* ---- direct registers (docs/sensor-facts.md §1.3) ------------------------------------------------------ */
-
-#define SCA3000_REG_REVID 0x00u
-#define SCA3000_REG_STATUS 0x02u
-#define SCA3000_REG_X_LSB 0x04u
-#define SCA3000_REG_X_MSB 0x05u
-#define SCA3000_REG_Y_LSB 0x06u
-#define SCA3000_REG_Y_MSB 0x07u
-#define SCA3000_REG_Z_LSB 0x08u
-#define SCA3000_REG_Z_MSB 0x09u
-#define SCA3000_REG_BUF_DATA 0x0Fu
-#define SCA3000_REG_TEMP_LSB 0x12u
-#define SCA3000_REG_TEMP_MSB 0x13u
-#define SCA3000_REG_MODE 0x14u
-#define SCA3000_REG_BUF_COUNT 0x15u
-#define SCA3000_REG_INT_STATUS 0x16u
-#define SCA3000_REG_CTRL_SEL 0x18u
-#define SCA3000_REG_UNLOCK 0x1Eu
-#define SCA3000_REG_INT_MASK 0x21u
-#define SCA3000_REG_CTRL_DATA 0x22u
-
-#define SCA3000_CMD_WRITE 0x02u
+/* ---- registers: the addresses, MODE bits and protected-bit masks are private to the driver
+ * (drivers/sca3000/sca3000_regs.h; the white-box tests of tests/sca3000 include it). What a
+ * caller passes or gets back is here: STATUS and INT_STATUS bits, indirect register selectors,
+ * ring axes. ----------------------------------------------------------------------------------- */
 
 #define SCA3000_STATUS_UNLOCKED 0x20u /* bit5: 1 = indirect registers unlocked (Linux reading) */
 #define SCA3000_STATUS_EEPROM 0x02u   /* bit1: EEPROM checksum error */
 #define SCA3000_STATUS_FRAME 0x01u    /* bit0: the part saw a corrupt SPI frame */
-
-#define SCA3000_MODE_BUF_EN 0x80u
-#define SCA3000_MODE_BUF_8BIT 0x40u
-#define SCA3000_MODE_FFD_EN 0x10u
-#define SCA3000_MODE_PROTECT 0x28u /* reserved: kept as read */
-#define SCA3000_MODE_MEAS_MASK 0x03u
 
 #define SCA3000_INT_RING_3_4 0x80u /* INT_STATUS / INT_MASK: ring 3/4 full */
 #define SCA3000_INT_RING_1_2 0x40u /* ring 1/2 full */
@@ -102,8 +79,6 @@ enum sca3000_variant {
 #define SCA3000_INT_MOTION_Y 0x04u
 #define SCA3000_INT_MOTION_X 0x02u
 #define SCA3000_INT_MOTION_Z 0x01u
-#define SCA3000_INT_MASK_PROTECT 0x1Cu
-#define SCA3000_INT_MASK_ACTIVE_HIGH 0x01u
 
 /* ---- indirect registers (CTRL_SEL values, docs/sensor-facts.md §1.5) ----------------------------------- */
 
@@ -114,11 +89,10 @@ enum sca3000_variant {
 #define SCA3000_IND_MD_Z_TH 0x05u
 #define SCA3000_IND_OUT_CTRL 0x0Bu
 
-#define SCA3000_MD_CTRL_PROTECT 0xC0u
-#define SCA3000_OUT_CTRL_PROTECT 0xE0u /* must stay set ("the device will not function") */
 #define SCA3000_OUT_CTRL_X 0x10u
 #define SCA3000_OUT_CTRL_Y 0x08u
 #define SCA3000_OUT_CTRL_Z 0x04u
+
 
 /* ---- SPI timing (all [U] in docs/sensor-facts.md; safe values, see docs/unconfirmed-facts.md) --------- */
 
@@ -131,7 +105,7 @@ enum sca3000_variant {
 /* CS high between two CS periods (the unlock sequence needs three separate periods). */
 #define SCA3000_STALL_NS 10000u
 
-/* The spi_timing initializer with the values above (gap between bytes of one period: none). */
+/* The spi_timing the driver uses, with the values above (gap between bytes of one period: none). */
 #define SCA3000_SPI_TIMING_INIT                                                               \
     {                                                                                         \
         SCA3000_SCLK_PERIOD_NS, SCA3000_CS_SETUP_NS, SCA3000_CS_HOLD_NS, SCA3000_STALL_NS, 0u \
@@ -158,8 +132,10 @@ enum sca3000_mode {
 
 struct sca3000_cfg {
     const struct spi_bus *bus;
-    struct spi_dev_cfg spi; /* cs; mode SPI_MODE_3 (0 accepted); bits 8;
-                                  timing SCA3000_SPI_TIMING_INIT */
+    hal_pin_t cs;   /* chip select (active low) */
+    bool spi_mode0; /* false: SPI mode 3; true: mode 0, which the part takes too. The
+                               driver builds the rest of its spi_dev_cfg itself (8-bit frames,
+                               SCA3000_SPI_TIMING_INIT), as the ADIS drivers do */
     enum sca3000_variant variant;
     uint8_t expected_revid; /* 0: SCA3000_REVID_DEFAULT; 0xFF is not allowed */
     const struct hal *hal;  /* for the INT line; may be NULL when int_pin is HAL_PIN_NONE */
@@ -179,9 +155,14 @@ struct sca3000 {
     uint8_t int_mask; /* INT_MASK as last written and verified */
     bool int_armed;   /* sca3000_int_config() done */
     bool int_active_high;
-    volatile bool int_pending; /* set by the INT callback */
+    struct sensor_dr int_edges; /* INT edges, counted by sensor_dr_isr (inclino/sensor.h) */
+    /* output pacing (sca3000_wait_ready) */
+    uint64_t next_ns;     /* earliest time of the next sample */
+    uint64_t sample_ns;   /* time of the sample the last wait ended at */
+    uint32_t pace_missed; /* output periods lost before that sample */
+    bool pace_started;    /* the first wait has been made since init / the last mode change */
     /* statistics */
-    uint32_t bus_faults, frame_errors, revid_confirms;
+    uint32_t bus_errors, frame_errors, revid_confirms;
 };
 
 /* One sample set. temp_valid is false on variants without a temperature output. */
@@ -218,7 +199,7 @@ int sca3000_read_reg(struct sca3000 *dev, uint8_t addr, uint8_t *val);
 /* Read STATUS and check it (see Integrity); a STATUS of 0x00 is confirmed with REVID (a MISO
  * stuck low reads 0x00 too). *status (may be NULL) gets the byte also when the result is
  * INC_ERR_DEVICE. */
-int sca3000_check_status(struct sca3000 *dev, uint8_t *status);
+int sca3000_read_diag(struct sca3000 *dev, uint8_t *status);
 
 /* Select the measurement mode (MODE[1:0], read-modify-write, verified). INC_ERR_UNSUPPORTED
  * for option 2 on the D01 and E02. */
@@ -226,6 +207,21 @@ int sca3000_set_mode(struct sca3000 *dev, enum sca3000_mode mode);
 enum sca3000_mode sca3000_get_mode(const struct sca3000 *dev);
 /* Output data rate of the current mode in mHz (docs/sensor-facts.md §1.6; 0 in motion detection). */
 uint32_t sca3000_odr_mhz(const struct sca3000 *dev);
+/* The output period of the current mode in ns, rounded up (never shorter than the part's):
+ * ceil(1e12 / sca3000_odr_mhz); 0 in motion detection or before init. */
+uint32_t sca3000_period_ns(const struct sca3000 *dev);
+
+/*
+ * Wait until the part has a new sample. The SCA3000 has no data-ready output in direct
+ * measurement mode (its INT line serves the ring buffer), so the output data rate paces the
+ * reads: each wait ends one output period after the previous one (hal_delay_until). The first
+ * wait after init or a mode change waits one period too, so that no sample from before is used.
+ * A wait that comes more than one period late returns at once and reports the periods lost in
+ * *missed (may be NULL). timeout_ns 0: no limit (the wait is at most one period); else
+ * INC_ERR_TIMEOUT when the next sample is due later than timeout_ns from now (waited that long,
+ * the pacing kept). INC_ERR_STATE before init, without a HAL, or in motion detection.
+ */
+int sca3000_wait_ready(struct sca3000 *dev, uint32_t timeout_ns, uint32_t *missed);
 
 /* X, Y, Z counts in one CS period (X_MSB down, wrapping to Z), then STATUS checked.
  * INC_ERR_STATE in motion-detection mode (no acceleration output). */
@@ -276,12 +272,19 @@ int sca3000_wait_int(struct sca3000 *dev, uint64_t deadline_ns);
  * INC_ERR_BUS when bits[2:0] are not 0 (not a word the part sends; e.g. MISO stuck high).
  * *count in -4096..4095.
  */
-int sca3000_decode_accel(uint16_t word, int16_t *count);
+int sca3000_accel_counts_from_word(uint16_t word, int16_t *count);
 /* Decode an 11-bit ring word (bits[15:5], bits[4:0] ignored) into 13-bit-unit counts: the
  * 11-bit value x 4, -4096..4092. Always succeeds. */
-int16_t sca3000_decode_ring11(uint16_t word);
+int16_t sca3000_ring_counts_from_word(uint16_t word);
 /* Decode the temperature word (TEMP_MSB << 8 | TEMP_LSB): 9 bits in bits[13:5], 0..511. */
-uint16_t sca3000_decode_temp(uint16_t word);
+uint16_t sca3000_temp_counts_from_word(uint16_t word);
+
+/* The variant codes of struct sensor_identity.product (the part has no product-id register);
+ * the calibration record's CALREC_SCA3000_* are the same numbers. */
+#define SCA3000_PRODUCT_D01 0x0D01u
+#define SCA3000_PRODUCT_E02 0x0E02u
+#define SCA3000_PRODUCT_E04 0x0E04u
+#define SCA3000_PRODUCT_E05 0x0E05u
 
 /* LSB of the variant in ug (750, 1000, 2000, 6250); 0 for E01 or an invalid variant. */
 uint32_t sca3000_ug_per_lsb(enum sca3000_variant v);
@@ -290,7 +293,7 @@ uint32_t sca3000_ug_per_lsb(enum sca3000_variant v);
  * counts (13-bit units, -4096..4095) -> micro-g, exact: counts x ug_per_lsb.
  * INC_ERR_INVAL for a bad variant, INC_ERR_RANGE for counts outside -4096..4095.
  */
-int sca3000_accel_to_ug(int32_t counts, enum sca3000_variant v, int32_t *ug);
+int sca3000_accel_ug_from_counts(int32_t counts, enum sca3000_variant v, int32_t *ug);
 
 /*
  * counts -> Q16.16 g: counts x ug_per_lsb x 65536 / 1e6, rounded to the nearest Q16.16 step,
@@ -298,7 +301,7 @@ int sca3000_accel_to_ug(int32_t counts, enum sca3000_variant v, int32_t *ug);
  * (E05), no saturation needed. Maximum error against exact math: 0.5 LSB of Q16.16
  * (7.63e-6 g). Bit-identical on every target (64-bit integer math, no shifts of negatives).
  */
-int sca3000_accel_to_q16_g(int32_t counts, enum sca3000_variant v, int32_t *g_q16);
+int sca3000_accel_g_from_counts(int32_t counts, enum sca3000_variant v, int32_t *g_q16);
 
 /*
  * 9-bit temperature counts (0..511, else INC_ERR_RANGE) -> Q16.16 degC:
@@ -307,7 +310,23 @@ int sca3000_accel_to_q16_g(int32_t counts, enum sca3000_variant v, int32_t *g_q1
  * The formula is the Linux driver's (offset -214.6 LSB, 0.555556 degC/LSB); the datasheet
  * value is UNCONFIRMED (docs/sensor-facts.md §1.4, docs/unconfirmed-facts.md).
  */
-int sca3000_temp_to_q16_c(int32_t raw9, int32_t *c_q16);
+int sca3000_temp_c_from_counts(int32_t raw9, int32_t *c_q16);
+
+/*
+ * The driver as a struct sensor (inclino/sensor.h); dev = struct sca3000, cfg of init =
+ * struct sca3000_cfg. An accelerometer with a temperature output on the D01 only.
+ *   wait_ready  sca3000_wait_ready (output-rate pacing, see there).
+ *   read        sca3000_read_sample: X, Y, Z in one CS period (and TEMP on the D01); t_ns = the
+ *               time the last wait ended at, missed = the periods it found lost. Saturation per
+ *               axis: a count at -4096 or 4095 (13-bit ends).
+ *   read_diag   STATUS (sca3000_read_diag): frame error -> SENSOR_D_BUS, EEPROM checksum ->
+ *               SENSOR_D_MEMORY (returned as 0 with the flags: the read worked); no supply.
+ *   self_test   INC_ERR_UNSUPPORTED: no source describes a self-test for the part.
+ *   identity    family SENSOR_FAMILY_SCA3000, product SCA3000_PRODUCT_*, revision = REVID.
+ *   info        accel full scale 4096 x the variant's LSB (3.072, 4.096, 8.192, 25.6 g),
+ *               rate = sca3000_odr_mhz.
+ */
+extern const struct sensor_ops sca3000_sensor_ops;
 
 #ifdef __cplusplus
 }

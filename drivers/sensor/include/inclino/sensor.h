@@ -11,7 +11,8 @@
  * temperature in degC, supply in V. The drivers' conversions are exact to 0.5 LSB of Q16.
  *
  * Errors (inclino/error.h): every op returns 0 or a negative code and never a plausible value
- * together with an error; on error the output is zeroed and has no SENSOR_S_HAVE_* flag set.
+ * together with an error: on error a sample is not to be used, and sensor_read and sensor_next
+ * zero it (no SENSOR_S_HAVE_* flag set); the other ops zero their output themselves.
  */
 #ifndef INCLINO_SENSOR_H
 #define INCLINO_SENSOR_H
@@ -21,6 +22,7 @@
 
 #include "inclino/error.h"
 #include "inclino/fx.h"
+#include "inclino/hal.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -96,7 +98,9 @@ struct sensor_ops {
     /* Bring the part up with the driver's own configuration (struct <driver>_cfg). */
     int (*init)(void *dev, const void *cfg);
     /* Wait until the part has a new sample (data-ready edge, or the output period where the
-     * part has no data-ready line), at most timeout_ns. INC_ERR_TIMEOUT when none came. */
+     * part has no data-ready line), at most timeout_ns; 0: the driver's default (a few sample
+     * periods). INC_ERR_TIMEOUT when none came. Samples the part made since the last one
+     * handed out are reported in the next sample's `missed`. */
     int (*wait_ready)(void *dev, uint32_t timeout_ns);
     /* Read the newest sample. INC_ERR_STALE when the part had no new data. */
     int (*read)(void *dev, struct sensor_sample *out);
@@ -105,7 +109,8 @@ struct sensor_ops {
     int (*read_diag)(void *dev, struct sensor_diag *out);
     /* Run the part's self-test; INC_ERR_DEVICE when it fails (out says why). */
     int (*self_test)(void *dev, struct sensor_diag *out);
-    /* The identity read at init. INC_ERR_STATE before a successful init. */
+    /* The part's identity (what init found, and where the part has them its serial number and
+     * lot ids, read on this call). INC_ERR_STATE before a successful init. */
     int (*identity)(void *dev, struct sensor_identity *out);
     /* The configured ranges and rate. INC_ERR_STATE before a successful init. */
     int (*info)(void *dev, struct sensor_info *out);
@@ -116,18 +121,54 @@ struct sensor {
     void *dev; /* the driver's instance (struct adis_imu, struct sca3000, ...) */
 };
 
-/* Call wrappers: INC_ERR_NULL for a NULL sensor, ops or op, else what the op returns. */
+/* Call wrappers: INC_ERR_NULL for a NULL sensor, ops, op or output, else what the op returns.
+ * (identity and info are sensor_get_identity / sensor_get_info: in C++ a function may not share
+ * its name with a struct.) */
 int sensor_init(const struct sensor *s, const void *cfg);
 int sensor_wait_ready(const struct sensor *s, uint32_t timeout_ns);
 int sensor_read(const struct sensor *s, struct sensor_sample *out);
 int sensor_read_diag(const struct sensor *s, struct sensor_diag *out);
 int sensor_self_test(const struct sensor *s, struct sensor_diag *out);
-int sensor_identity(const struct sensor *s, struct sensor_identity *out);
-int sensor_info(const struct sensor *s, struct sensor_info *out);
+int sensor_get_identity(const struct sensor *s, struct sensor_identity *out);
+int sensor_get_info(const struct sensor *s, struct sensor_info *out);
 
 /* Wait for the next sample and read it; a stale read (INC_ERR_STALE) is retried once after the
- * next data-ready. */
+ * next wait. On any error *out is zeroed. INC_ERR_NULL for a NULL out, before any wait. */
 int sensor_next(const struct sensor *s, uint32_t timeout_ns, struct sensor_sample *out);
+
+/* ---- Data-ready edges ------------------------------------------------------------------ */
+
+/*
+ * Data-ready edges, counted in interrupt context and consumed by the driver: the one data-ready
+ * helper of every driver (ADIS16255 and ADIS1636x/1640x data-ready, the SCA3000's INT line). The part pulses its data-ready line once per sample; the interrupt handler
+ * only increments `count`, so an edge is never lost and edges the driver did not wait for are
+ * counted (a missed sample is reported, not hidden). Unsigned wrap-around is harmless: only
+ * count - taken is used.
+ */
+struct sensor_dr {
+    volatile uint32_t count; /* edges seen (written in interrupt context only) */
+    uint32_t taken;          /* count when the driver last consumed the edges */
+};
+
+/* Zero both counters (no interrupt may be attached yet). */
+void sensor_dr_reset(struct sensor_dr *dr);
+
+/* The interrupt handler to pass to hal_irq_attach, with arg = the struct sensor_dr. */
+void sensor_dr_isr(void *arg);
+
+/* Forget the edges seen so far (taken = count, in a critical section). */
+void sensor_dr_sync(const struct hal *hal, struct sensor_dr *dr);
+
+/*
+ * Wait until at least one edge has come since the last consumption, or until the HAL clock
+ * reaches deadline_ns. On an edge: consumes all pending edges, *pending (may be NULL) = their
+ * number (>= 1; > 1 means samples were missed), INC_OK. At the deadline with no edge:
+ * *pending = 0, INC_ERR_TIMEOUT. An edge that arrives exactly at the deadline is taken. Between
+ * checks it sleeps in hal_irq_wait, which may return at any attached interrupt (another part's
+ * too): it looks again either way.
+ */
+int sensor_dr_wait(const struct hal *hal, struct sensor_dr *dr, uint64_t deadline_ns,
+                   uint32_t *pending);
 
 #ifdef __cplusplus
 }

@@ -1,7 +1,8 @@
 /*
  * app.h - the EPB application (module inclino_app, prefix app_): what runs on the ECU.
  *
- * Pipeline, per sample of the sensor adapter (inclino/app_sensor.h):
+ * Pipeline, per sample of the sensor (struct sensor, inclino/sensor.h: any driver's ops table,
+ * or a replay's):
  *   nominal-scaled sample -> calibration of the record loaded from calstore (cal_acc_apply with
  *   the temperature models evaluated at the sample's temperature, cal_gyro_apply) -> stillness
  *   detection (inclino/still.h) -> block average of avg_n samples;
@@ -41,12 +42,12 @@
 #include <stdbool.h>
 #include <stdint.h>
 
-#include "inclino/app_sensor.h"
 #include "inclino/cal.h"
 #include "inclino/calrec.h"
 #include "inclino/calstore.h"
 #include "inclino/error.h"
 #include "inclino/fx.h"
+#include "inclino/sensor.h"
 #include "inclino/slope.h"
 #include "inclino/still.h"
 
@@ -128,13 +129,13 @@ struct app_corrected {
     fx_q16_t accel_g[3];
     fx_q16_t gyro_dps[3];
     fx_q16_t temp_c;
-    uint32_t flags; /* APP_S_* of the sample */
+    uint32_t flags; /* SENSOR_S_* of the sample */
 };
 
 struct app {
     struct app_cfg cfg;
-    struct app_sensor sensor;
-    struct calrec_binding id; /* the sensor's identity, read at init */
+    struct sensor sensor;
+    struct calrec_binding id; /* the sensor's identity (sensor_identity), read at init */
     struct calrec rec;        /* the record in use (safe default when uncalibrated) */
     struct cal_acc acc;
     struct cal_gyro gyro;
@@ -182,26 +183,28 @@ int app_cfg_check(const struct app_cfg *cfg);
  * Start the application: read the sensor's identity, load its calibration from store (NULL:
  * none), bind the correction to it. Returns 0 when the application runs, calibrated or not
  * (a->cal_status tells: 0, or calstore_load's code; INC_ERR_NOT_CALIBRATED without a store);
- * INC_ERR_NULL / INC_ERR_INVAL (cfg, sensor ops) or the identity read's error (a is then not
+ * INC_ERR_NULL (a, cfg, sensor, or an ops table without wait_ready, read or identity),
+ * INC_ERR_INVAL (cfg), or the identity read's error (a is then not
  * ready and every call returns INC_ERR_STATE).
  */
-int app_init(struct app *a, const struct app_cfg *cfg, const struct app_sensor *sensor,
+int app_init(struct app *a, const struct app_cfg *cfg, const struct sensor *sensor,
              struct calstore *store);
 
 /* True when a valid record is applied (at the last evaluated temperature). */
 bool app_calibrated(const struct app *a);
 
 /*
- * Feed one sample (from the adapter, or from a replay). It is calibrated (out, may be NULL),
+ * Feed one sample (from the sensor, or from a replay). It is calibrated (out, may be NULL),
  * pushed to the stillness detector and into the block. When it completes a block, *done is true
  * and *res holds the estimate; the next block starts. read_err != 0 counts a failed read instead
  * (s is not used, may be NULL). INC_ERR_NULL, INC_ERR_STATE.
  */
-int app_step(struct app *a, const struct app_sample *s, int read_err, struct app_corrected *out,
+int app_step(struct app *a, const struct sensor_sample *s, int read_err, struct app_corrected *out,
              bool *done, struct app_result *res);
 
 /*
- * Read samples from the sensor until one block is complete and return its estimate in *res.
+ * Read samples from the sensor (sensor_next with the driver's default timeout: the next
+ * data-ready, or the next output period) until one block is complete and return its estimate.
  * Read errors are counted (APP_F_SENSOR beyond max_sensor_errors); after 4 * avg_n reads without
  * a complete block the last read error is returned. 0, INC_ERR_NULL, INC_ERR_STATE, or that
  * error.
@@ -219,7 +222,7 @@ struct app_face {
     fx_q16_t gyro_dps[3]; /* 0 for a part without gyro */
     fx_q16_t temp_c;      /* 0 for a part without temperature */
     uint32_t n;           /* samples averaged */
-    uint32_t flags;       /* APP_S_HAVE_GYRO / APP_S_HAVE_TEMP as the part has them */
+    uint32_t flags;       /* SENSOR_S_HAVE_GYRO / SENSOR_S_HAVE_TEMP as the part has them */
 };
 
 /*

@@ -100,7 +100,7 @@ int app_esc_init(struct app_esc *e, const struct app_esc_cfg *cfg);
  * app_step's error; att_update's INC_ERR_RANGE (an input beyond full scale) is not an error here:
  * the estimator marks itself invalid and says so in att_fault.
  */
-int app_esc_step(struct app_esc *e, struct app *a, const struct app_sample *s, int read_err,
+int app_esc_step(struct app_esc *e, struct app *a, const struct sensor_sample *s, int read_err,
                  const struct app_vehicle *veh, struct app_esc_output *out, bool *have_out);
 
 /* The mode now (enum app_mode); APP_MODE_PARKED for NULL. */

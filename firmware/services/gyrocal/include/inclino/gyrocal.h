@@ -1,7 +1,8 @@
 /*
  * gyrocal.h - gyro bias calibration of the ADIS1636x/1640x (module inclino_gyrocal, prefix
- * gyrocal_), on top of the driver (inclino/adis_imu.h). Freestanding C11, integer only,
- * caller-allocated state. The three options of [ADI-IMU-QS] ("optimising bias accuracy"):
+ * gyrocal_), on top of the driver (inclino/adis_imu.h, its public functions only).
+ * Freestanding C11, integer only, caller-allocated state. The three options of [ADI-IMU-QS]
+ * ("optimising bias accuracy"):
  *
  *   AUTONULL   SMPL_PRD = 0x01, SENS_AVG M = 6 (64 taps per stage; range kept), 200 ms for the
  *              taps to fill, GLOB_CMD[0]: the part writes minus its output into XGYRO_OFF..
@@ -9,7 +10,7 @@
  *   PRECISION  GLOB_CMD[4]: the part averages 30 s at its own settings and writes the offsets.
  *              [ADI-IMU-QS]: about 0.008 deg/s.
  *   MANUAL     SMPL_PRD = 0x01; wait for thermal settling (TEMP_OUT); average manual_samples
- *              (seed: 82 000, about 100 s at 819.2 SPS) of each gyro; offset = old - round(80 x
+ *              ([ADI-IMU-QS]: 82 000, about 100 s at 819.2 SPS) of each gyro; offset = old - round(80 x
  *              mean deg/s), 13-bit two's complement (docs/sensor-facts.md §3.4; [ADI-IMU-QS] says 14-bit, see
  *              docs/gyro-calibration.md), saturating; write; GLOB_CMD[3] flash update (bit 3 =
  *              DIN 0xBE08; [ADI-IMU-QS] prints 0xBE04, which is bit 2, the AUX DAC latch).
@@ -102,7 +103,7 @@ struct gyrocal_cfg {
  * Defaults for a variant and gyro range, from [ADI-IMU-QS] and the fact sheet:
  *  still: 1 s windows (819 samples at 819.2 SPS), 2 in a row; gyro variance for "less than
  *   1 deg/s rms unfiltered" ([ADI-IMU-QS]) plus the 6-sigma margin of a 819-sample estimate; accel
- *   variance for 10 mg rms [U: no accelerometer noise figure in the seeds]; |gyro mean| <= 5 deg/s
+ *   variance for 10 mg rms [U: no accelerometer noise figure in docs/references.md]; |gyro mean| <= 5 deg/s
  *   [U: above any uncalibrated bias]; | |a| - 1 g | <= 100 mg; accel drift <= 3 mg per window;
  *  thermal: 1 s points (819 samples), 30 s window, at most 1 TEMP_OUT LSB of change;
  *  manual: 82 000 samples, to the register, flash update, 15 min settling timeout ([ADI-IMU-QS]: up

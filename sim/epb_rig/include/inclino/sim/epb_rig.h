@@ -2,7 +2,7 @@
  * sim/epb_rig.h - the EPB demo's rig (module inclino_epb_rig, prefix epb_rig_): one simulated
  * board with one inertial part (ADIS1636x/1640x or SCA3000 pin-level model) carrying the errors
  * calibration removes (sim/calpart.h), an emulated NOR flash for the calibration store, the real
- * drivers, the sensor adapter and the EPB application (inclino/app.h) on top, and the physics
+ * drivers (as a struct sensor, inclino/sensor.h) and the EPB application (inclino/app.h) on top, and the physics
  * the part feels:
  *
  *   STATION  the end-of-line station: the part lies on one of its six faces (enum cal_face) in a
@@ -149,7 +149,7 @@ struct epb_rig *epb_rig_instance(void);
 /* Parts of the rig. */
 const struct epb_rig_part_info *epb_rig_info(const struct epb_rig *r);
 struct app *epb_rig_app(struct epb_rig *r);
-const struct app_sensor *epb_rig_sensor(const struct epb_rig *r);
+const struct sensor *epb_rig_sensor(const struct epb_rig *r);
 struct calstore *epb_rig_store(struct epb_rig *r);
 struct sim_pinbus *epb_rig_pinbus(struct epb_rig *r);
 /* Start a VCD of the SPI pins and the part's data-ready line (sim_vcd_open). */

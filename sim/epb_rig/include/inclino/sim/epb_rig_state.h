@@ -6,8 +6,6 @@
 #define INCLINO_SIM_EPB_RIG_STATE_H
 
 #include "inclino/adis_imu.h"
-#include "inclino/app_adis.h"
-#include "inclino/app_sca3000.h"
 #include "inclino/sca3000.h"
 #include "inclino/sim/adis_imu.h"
 #include "inclino/sim/board.h"
@@ -47,9 +45,7 @@ struct epb_rig {
     /* firmware side (re-created at every power-up) */
     struct adis_imu imu;
     struct sca3000 sca_dev;
-    struct app_adis ad_adis;
-    struct app_sca3000 ad_sca;
-    struct app_sensor sensor;
+    struct sensor sensor; /* ops of the driver in use, dev = &imu or &sca_dev */
     struct calstore store;
     struct app app;
 };

@@ -1,9 +1,9 @@
 /*
- * adis_dr.c - data-ready edge counting shared by the ADIS drivers (adis.h).
+ * sensor_dr.c - data-ready edge counting, the one helper of every driver (inclino/sensor.h).
  */
-#include "inclino/adis.h"
+#include "inclino/sensor.h"
 
-void adis_dr_reset(struct adis_dr *dr)
+void sensor_dr_reset(struct sensor_dr *dr)
 {
     if (dr != NULL) {
         dr->count = 0;
@@ -11,16 +11,16 @@ void adis_dr_reset(struct adis_dr *dr)
     }
 }
 
-void adis_dr_isr(void *arg)
+void sensor_dr_isr(void *arg)
 {
-    struct adis_dr *dr = arg;
+    struct sensor_dr *dr = arg;
     if (dr != NULL) {
         dr->count = dr->count + 1u;
     }
 }
 
 /* Edges not yet consumed; consumes them. */
-static uint32_t take(const struct hal *hal, struct adis_dr *dr)
+static uint32_t take(const struct hal *hal, struct sensor_dr *dr)
 {
     const uint32_t key = hal_crit_enter(hal);
     const uint32_t n = dr->count - dr->taken;
@@ -29,14 +29,15 @@ static uint32_t take(const struct hal *hal, struct adis_dr *dr)
     return n;
 }
 
-void adis_dr_sync(const struct hal *hal, struct adis_dr *dr)
+void sensor_dr_sync(const struct hal *hal, struct sensor_dr *dr)
 {
     if (hal != NULL && dr != NULL) {
         (void)take(hal, dr);
     }
 }
 
-int adis_dr_wait(const struct hal *hal, struct adis_dr *dr, uint64_t deadline_ns, uint32_t *pending)
+int sensor_dr_wait(const struct hal *hal, struct sensor_dr *dr, uint64_t deadline_ns,
+                   uint32_t *pending)
 {
     uint32_t n = 0;
     int err = INC_OK;

@@ -1,10 +1,10 @@
 /*
- * adis_dr: the data-ready edge counting the ADIS drivers share (drivers/adis). A scripted HAL
+ * sensor_dr: the data-ready edge counting every driver shares (drivers/sensor). A scripted HAL
  * here: a clock that only irq_wait moves, edges at scripted times delivered through the attached
  * handler, "foreign" wake-ups (another part's interrupt) and a check that every critical section
  * is left. Integer only: it also runs on rv32imac.
  */
-#include "inclino/adis.h"
+#include "inclino/sensor.h"
 #include "unit.h"
 
 #define MAX_EV 8
@@ -98,14 +98,14 @@ static const struct hal_ops fake_ops = {f_pin_write, f_pin_read, f_now,   f_dela
 
 static struct fake fk;
 static struct hal hal = {&fake_ops, &fk};
-static struct adis_dr dr;
+static struct sensor_dr dr;
 
 static void setup(void)
 {
     struct fake zero = {0};
     fk = zero;
-    adis_dr_reset(&dr);
-    CHECK_EQ_INT(hal_irq_attach(&hal, 0, HAL_EDGE_FALLING, adis_dr_isr, &dr), INC_OK);
+    sensor_dr_reset(&dr);
+    CHECK_EQ_INT(hal_irq_attach(&hal, 0, HAL_EDGE_FALLING, sensor_dr_isr, &dr), INC_OK);
 }
 
 static void script(uint64_t t, bool foreign)
@@ -120,13 +120,13 @@ static void test_timeout(void)
     uint32_t pending = 99;
     setup();
     fk.now = 1000;
-    CHECK_EQ_INT(adis_dr_wait(&hal, &dr, 5000, &pending), INC_ERR_TIMEOUT);
+    CHECK_EQ_INT(sensor_dr_wait(&hal, &dr, 5000, &pending), INC_ERR_TIMEOUT);
     CHECK_EQ_INT(fk.now, 5000u);
     CHECK_EQ_INT(pending, 0u);
     CHECK_EQ_INT(fk.crit_depth, 0);
     /* deadline already past: no sleep at all */
     fk.waits = 0;
-    CHECK_EQ_INT(adis_dr_wait(&hal, &dr, 10, &pending), INC_ERR_TIMEOUT);
+    CHECK_EQ_INT(sensor_dr_wait(&hal, &dr, 10, &pending), INC_ERR_TIMEOUT);
     CHECK_EQ_INT(fk.waits, 0u);
     CHECK_EQ_INT(fk.now, 5000u);
 }
@@ -137,28 +137,28 @@ static void test_edges(void)
     setup();
     /* an edge during the wait: taken at its time */
     script(700, false);
-    CHECK_EQ_INT(adis_dr_wait(&hal, &dr, 2000, &pending), INC_OK);
+    CHECK_EQ_INT(sensor_dr_wait(&hal, &dr, 2000, &pending), INC_OK);
     CHECK_EQ_INT(pending, 1u);
     CHECK_EQ_INT(fk.now, 700u);
     /* three edges while nobody waited: all consumed at once, no sleep, reported as 3 */
-    adis_dr_isr(&dr);
-    adis_dr_isr(&dr);
-    adis_dr_isr(&dr);
+    sensor_dr_isr(&dr);
+    sensor_dr_isr(&dr);
+    sensor_dr_isr(&dr);
     fk.waits = 0;
-    CHECK_EQ_INT(adis_dr_wait(&hal, &dr, 2000, &pending), INC_OK);
+    CHECK_EQ_INT(sensor_dr_wait(&hal, &dr, 2000, &pending), INC_OK);
     CHECK_EQ_INT(pending, 3u);
     CHECK_EQ_INT(fk.waits, 0u);
     /* consumed: the next wait times out */
-    CHECK_EQ_INT(adis_dr_wait(&hal, &dr, 2000, &pending), INC_ERR_TIMEOUT);
+    CHECK_EQ_INT(sensor_dr_wait(&hal, &dr, 2000, &pending), INC_ERR_TIMEOUT);
     CHECK_EQ_INT(pending, 0u);
     /* an edge exactly at the deadline is taken */
     script(3000, false);
-    CHECK_EQ_INT(adis_dr_wait(&hal, &dr, 3000, &pending), INC_OK);
+    CHECK_EQ_INT(sensor_dr_wait(&hal, &dr, 3000, &pending), INC_OK);
     CHECK_EQ_INT(pending, 1u);
     /* just after the deadline: not taken by this wait, taken by the next */
     script(4001, false);
-    CHECK_EQ_INT(adis_dr_wait(&hal, &dr, 4000, &pending), INC_ERR_TIMEOUT);
-    CHECK_EQ_INT(adis_dr_wait(&hal, &dr, 5000, &pending), INC_OK);
+    CHECK_EQ_INT(sensor_dr_wait(&hal, &dr, 4000, &pending), INC_ERR_TIMEOUT);
+    CHECK_EQ_INT(sensor_dr_wait(&hal, &dr, 5000, &pending), INC_OK);
     CHECK_EQ_INT(pending, 1u);
     CHECK_EQ_INT(fk.now, 4001u);
     CHECK_EQ_INT(fk.crit_depth, 0);
@@ -173,13 +173,13 @@ static void test_foreign_wakeups(void)
     script(100, true);
     script(200, true);
     script(300, false);
-    CHECK_EQ_INT(adis_dr_wait(&hal, &dr, 1000, &pending), INC_OK);
+    CHECK_EQ_INT(sensor_dr_wait(&hal, &dr, 1000, &pending), INC_OK);
     CHECK_EQ_INT(pending, 1u);
     CHECK_EQ_INT(fk.now, 300u);
     CHECK_EQ_INT(fk.waits, 3u);
     /* only foreign wake-ups: a timeout at the deadline */
     script(400, true);
-    CHECK_EQ_INT(adis_dr_wait(&hal, &dr, 1000, &pending), INC_ERR_TIMEOUT);
+    CHECK_EQ_INT(sensor_dr_wait(&hal, &dr, 1000, &pending), INC_ERR_TIMEOUT);
     CHECK_EQ_INT(fk.now, 1000u);
 }
 
@@ -187,20 +187,20 @@ static void test_sync_and_wrap(void)
 {
     uint32_t pending = 0;
     setup();
-    adis_dr_isr(&dr);
-    adis_dr_isr(&dr);
-    adis_dr_sync(&hal, &dr);
-    CHECK_EQ_INT(adis_dr_wait(&hal, &dr, 10, &pending), INC_ERR_TIMEOUT);
+    sensor_dr_isr(&dr);
+    sensor_dr_isr(&dr);
+    sensor_dr_sync(&hal, &dr);
+    CHECK_EQ_INT(sensor_dr_wait(&hal, &dr, 10, &pending), INC_ERR_TIMEOUT);
     CHECK_EQ_INT(dr.count, 2u);
     CHECK_EQ_INT(dr.taken, 2u);
     /* the counter wraps: count - taken still counts the edges */
     dr.count = 0xFFFFFFFEu;
     dr.taken = 0xFFFFFFFEu;
-    adis_dr_isr(&dr);
-    adis_dr_isr(&dr);
-    adis_dr_isr(&dr);
+    sensor_dr_isr(&dr);
+    sensor_dr_isr(&dr);
+    sensor_dr_isr(&dr);
     CHECK_EQ_INT(dr.count, 1u);
-    CHECK_EQ_INT(adis_dr_wait(&hal, &dr, 10, &pending), INC_OK);
+    CHECK_EQ_INT(sensor_dr_wait(&hal, &dr, 10, &pending), INC_OK);
     CHECK_EQ_INT(pending, 3u);
     CHECK_EQ_INT(dr.taken, 1u);
 }
@@ -209,14 +209,14 @@ static void test_bad_args(void)
 {
     uint32_t pending = 7;
     setup();
-    CHECK_EQ_INT(adis_dr_wait(NULL, &dr, 10, &pending), INC_ERR_NULL);
+    CHECK_EQ_INT(sensor_dr_wait(NULL, &dr, 10, &pending), INC_ERR_NULL);
     CHECK_EQ_INT(pending, 0u);
-    CHECK_EQ_INT(adis_dr_wait(&hal, NULL, 10, &pending), INC_ERR_NULL);
-    CHECK_EQ_INT(adis_dr_wait(&hal, &dr, 10, NULL), INC_ERR_TIMEOUT); /* pending may be NULL */
-    adis_dr_isr(NULL);                                                /* no effect, no crash */
-    adis_dr_sync(NULL, &dr);
-    adis_dr_sync(&hal, NULL);
-    adis_dr_reset(NULL);
+    CHECK_EQ_INT(sensor_dr_wait(&hal, NULL, 10, &pending), INC_ERR_NULL);
+    CHECK_EQ_INT(sensor_dr_wait(&hal, &dr, 10, NULL), INC_ERR_TIMEOUT); /* pending may be NULL */
+    sensor_dr_isr(NULL);                                                /* no effect, no crash */
+    sensor_dr_sync(NULL, &dr);
+    sensor_dr_sync(&hal, NULL);
+    sensor_dr_reset(NULL);
     CHECK_EQ_INT(fk.crit_depth, 0);
 }
 
