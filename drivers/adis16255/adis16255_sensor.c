@@ -39,7 +39,6 @@ static int op_read(void *ctx, struct sensor_sample *out)
     struct adis16255 *dev = ctx;
     struct adis16255_sample s;
     int32_t c;
-    unsigned i;
     int err;
     if (dev == NULL || out == NULL) {
         return INC_ERR_NULL;
@@ -49,10 +48,7 @@ static int op_read(void *ctx, struct sensor_sample *out)
         dev->sensor_missed = err == INC_ERR_STALE ? dev->sensor_missed + 1u : 0u;
         return err;
     }
-    for (i = 0; i < 3u; i++) {
-        out->accel_g[i] = 0;
-        out->gyro_dps[i] = 0;
-    }
+    sensor_sample_clear(out);
     out->gyro_dps[GYRO_AXIS] = s.rate_dps_q16;
     out->temp_c = s.temp_c_q16;
     out->flags = SENSOR_S_HAVE_GYRO | SENSOR_S_HAVE_TEMP;
@@ -78,13 +74,6 @@ static uint32_t diag_flags(const struct adis16255_status *st)
     return f;
 }
 
-static void diag_clear(struct sensor_diag *out)
-{
-    out->flags = 0u;
-    out->raw = 0u;
-    out->supply_v = 0;
-}
-
 static int op_read_diag(void *ctx, struct sensor_diag *out)
 {
     struct adis16255 *dev = ctx;
@@ -94,7 +83,7 @@ static int op_read_diag(void *ctx, struct sensor_diag *out)
     if (dev == NULL || out == NULL) {
         return INC_ERR_NULL;
     }
-    diag_clear(out);
+    sensor_diag_clear(out);
     err = adis16255_read_diag(dev, &st);
     if (err == INC_OK) {
         err = adis16255_read_supply(dev, &v);
@@ -118,7 +107,7 @@ static int op_self_test(void *ctx, struct sensor_diag *out)
     if (dev == NULL || out == NULL) {
         return INC_ERR_NULL;
     }
-    diag_clear(out);
+    sensor_diag_clear(out);
     err = adis16255_self_test(dev);
     if (err == INC_OK || err == INC_ERR_DEVICE) {
         out->flags = diag_flags(&dev->status);
@@ -133,12 +122,7 @@ static int op_identity(void *ctx, struct sensor_identity *out)
     if (dev == NULL || out == NULL) {
         return INC_ERR_NULL;
     }
-    out->family = (uint32_t)SENSOR_FAMILY_NONE;
-    out->product = 0u;
-    out->revision = 0u;
-    out->serial = 0u;
-    out->lot_id1 = 0u;
-    out->lot_id2 = 0u;
+    sensor_identity_clear(out);
     if (!dev->ready) {
         return INC_ERR_STATE;
     }

@@ -47,16 +47,6 @@ const struct hal *adis_imu_hal(const struct adis_imu *dev)
     return dev != NULL ? dev->cfg.hal : NULL;
 }
 
-static void identity_clear(struct sensor_identity *out)
-{
-    out->family = (uint32_t)SENSOR_FAMILY_NONE;
-    out->product = 0u;
-    out->revision = 0u;
-    out->serial = 0u;
-    out->lot_id1 = 0u;
-    out->lot_id2 = 0u;
-}
-
 int adis_imu_read_identity(struct adis_imu *dev, struct sensor_identity *out)
 {
     uint16_t prod = 0, serial = 0, lot1 = 0, lot2 = 0;
@@ -64,7 +54,7 @@ int adis_imu_read_identity(struct adis_imu *dev, struct sensor_identity *out)
     if (dev == NULL || out == NULL) {
         return INC_ERR_NULL;
     }
-    identity_clear(out);
+    sensor_identity_clear(out);
     if (!dev->ready || dev->info == NULL) {
         return INC_ERR_STATE;
     }
@@ -162,13 +152,6 @@ static int op_read(void *ctx, struct sensor_sample *out)
     return INC_OK;
 }
 
-static void diag_clear(struct sensor_diag *out)
-{
-    out->flags = 0u;
-    out->raw = 0u;
-    out->supply_v = 0;
-}
-
 static uint32_t diag_flags(uint16_t d)
 {
     uint32_t f = 0u;
@@ -191,7 +174,7 @@ static int op_read_diag(void *ctx, struct sensor_diag *out)
     if (dev == NULL || out == NULL) {
         return INC_ERR_NULL;
     }
-    diag_clear(out);
+    sensor_diag_clear(out);
     err = adis_imu_read_diag(dev, &d);
     if (err == INC_OK) {
         err = adis_imu_read_reg(dev, ADIS_IMU_REG_SUPPLY_OUT, &w);
@@ -213,7 +196,7 @@ static int op_self_test(void *ctx, struct sensor_diag *out)
     if (dev == NULL || out == NULL) {
         return INC_ERR_NULL;
     }
-    diag_clear(out);
+    sensor_diag_clear(out);
     err = adis_imu_self_test(dev, &d);
     if (err == INC_OK || err == INC_ERR_DEVICE) {
         out->flags = diag_flags(d);

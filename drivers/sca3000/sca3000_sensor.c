@@ -64,13 +64,6 @@ static int op_read(void *ctx, struct sensor_sample *out)
     return INC_OK;
 }
 
-static void diag_clear(struct sensor_diag *out)
-{
-    out->flags = 0u;
-    out->raw = 0u;
-    out->supply_v = 0;
-}
-
 static int op_read_diag(void *ctx, struct sensor_diag *out)
 {
     struct sca3000 *dev = ctx;
@@ -79,7 +72,7 @@ static int op_read_diag(void *ctx, struct sensor_diag *out)
     if (dev == NULL || out == NULL) {
         return INC_ERR_NULL;
     }
-    diag_clear(out);
+    sensor_diag_clear(out);
     err = sca3000_read_diag(dev, &st);
     if (err != INC_OK && err != INC_ERR_DEVICE) {
         return err;
@@ -98,7 +91,7 @@ static int op_self_test(void *ctx, struct sensor_diag *out)
     if (ctx == NULL || out == NULL) {
         return INC_ERR_NULL;
     }
-    diag_clear(out);
+    sensor_diag_clear(out);
     return INC_ERR_UNSUPPORTED;
 }
 
@@ -108,12 +101,7 @@ static int op_identity(void *ctx, struct sensor_identity *out)
     if (dev == NULL || out == NULL) {
         return INC_ERR_NULL;
     }
-    out->family = (uint32_t)SENSOR_FAMILY_NONE;
-    out->product = 0u;
-    out->revision = 0u;
-    out->serial = 0u;
-    out->lot_id1 = 0u;
-    out->lot_id2 = 0u;
+    sensor_identity_clear(out);
     if (!dev->ready) {
         return INC_ERR_STATE;
     }

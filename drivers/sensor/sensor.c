@@ -5,8 +5,9 @@
 
 #include <stddef.h>
 
-static void sample_clear(struct sensor_sample *out)
+void sensor_sample_clear(struct sensor_sample *out)
 {
+    if (out == NULL) return;
     unsigned i;
     for (i = 0; i < 3u; i++) {
         out->accel_g[i] = 0;
@@ -35,11 +36,11 @@ int sensor_read(const struct sensor *s, struct sensor_sample *out)
     int err;
     if (out == NULL) return INC_ERR_NULL;
     if (s == NULL || s->ops == NULL || s->ops->read == NULL) {
-        sample_clear(out);
+        sensor_sample_clear(out);
         return INC_ERR_NULL;
     }
     err = s->ops->read(s->dev, out);
-    if (err != INC_OK) sample_clear(out);
+    if (err != INC_OK) sensor_sample_clear(out);
     return err;
 }
 
@@ -83,6 +84,25 @@ int sensor_next(const struct sensor *s, uint32_t timeout_ns, struct sensor_sampl
             if (err == INC_OK) err = sensor_read(s, out);
         }
     }
-    if (err != INC_OK) sample_clear(out);
+    if (err != INC_OK) sensor_sample_clear(out);
     return err;
+}
+
+void sensor_identity_clear(struct sensor_identity *out)
+{
+    if (out == NULL) return;
+    out->family = (uint32_t)SENSOR_FAMILY_NONE;
+    out->product = 0u;
+    out->revision = 0u;
+    out->serial = 0u;
+    out->lot_id1 = 0u;
+    out->lot_id2 = 0u;
+}
+
+void sensor_diag_clear(struct sensor_diag *out)
+{
+    if (out == NULL) return;
+    out->flags = 0u;
+    out->raw = 0u;
+    out->supply_v = 0;
 }

@@ -228,8 +228,35 @@ static void test_next_stale_retry(void)
     check_zero(&s);
 }
 
+/* The safe states the ops write on error: everything zero, no flag, family NONE; NULL ignored. */
+static void test_clear(void)
+{
+    struct sensor_sample smp;
+    struct sensor_identity id;
+    struct sensor_diag d;
+    memset(&smp, 0x5A, sizeof smp);
+    memset(&id, 0x5A, sizeof id);
+    memset(&d, 0x5A, sizeof d);
+    sensor_sample_clear(&smp);
+    sensor_identity_clear(&id);
+    sensor_diag_clear(&d);
+    CHECK_EQ_INT(smp.accel_g[0] | smp.accel_g[1] | smp.accel_g[2], 0);
+    CHECK_EQ_INT(smp.gyro_dps[0] | smp.gyro_dps[1] | smp.gyro_dps[2] | smp.temp_c, 0);
+    CHECK_EQ_INT(smp.flags, 0);
+    CHECK_EQ_INT(smp.missed, 0);
+    CHECK_EQ_INT(smp.t_ns, 0);
+    CHECK_EQ_INT(id.family, SENSOR_FAMILY_NONE);
+    CHECK_EQ_INT(id.product | id.revision | id.serial | id.lot_id1 | id.lot_id2, 0);
+    CHECK_EQ_INT(d.flags | d.raw, 0);
+    CHECK_EQ_INT(d.supply_v, 0);
+    sensor_sample_clear(NULL);
+    sensor_identity_clear(NULL);
+    sensor_diag_clear(NULL);
+}
+
 int main(void)
 {
+    UNIT_RUN(test_clear);
     UNIT_RUN(test_null_handling);
     UNIT_RUN(test_pass_through);
     UNIT_RUN(test_next_stale_retry);

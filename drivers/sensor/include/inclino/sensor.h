@@ -132,6 +132,13 @@ int sensor_self_test(const struct sensor *s, struct sensor_diag *out);
 int sensor_get_identity(const struct sensor *s, struct sensor_identity *out);
 int sensor_get_info(const struct sensor *s, struct sensor_info *out);
 
+/* The safe states of the three outputs, which every op writes on error: a zero sample with no
+ * SENSOR_S_HAVE_* flag, an identity of family SENSOR_FAMILY_NONE, a diagnosis with no flag.
+ * NULL is ignored. */
+void sensor_sample_clear(struct sensor_sample *out);
+void sensor_identity_clear(struct sensor_identity *out);
+void sensor_diag_clear(struct sensor_diag *out);
+
 /* Wait for the next sample and read it; a stale read (INC_ERR_STALE) is retried once after the
  * next wait. On any error *out is zeroed. INC_ERR_NULL for a NULL out, before any wait. */
 int sensor_next(const struct sensor *s, uint32_t timeout_ns, struct sensor_sample *out);
