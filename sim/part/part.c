@@ -275,3 +275,15 @@ void sim_part_poke(struct sim_part *p, uint8_t addr, uint16_t value)
         p->ops->poke(p->model, addr, value);
     }
 }
+
+int sim_stuck_bit_fault(struct sim_stuck_bit *s, const struct sim_fault_arg *arg, bool on,
+                        uint8_t addr_mask, unsigned width)
+{
+    if (arg->bit >= width) {
+        return INC_ERR_INVAL;
+    }
+    s->addr = (uint8_t)(arg->addr & addr_mask);
+    s->mask = on ? (uint16_t)(1u << arg->bit) : 0u;
+    s->set = arg->level ? s->mask : 0u;
+    return INC_OK;
+}

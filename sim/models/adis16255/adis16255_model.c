@@ -452,10 +452,7 @@ static uint16_t m_read(void *model, uint8_t addr, uint64_t t)
 {
     struct sim_adis16255 *m = model;
     uint16_t v = m_read_reg(model, addr, t);
-    if (m->stuck_mask != 0u && (addr & 0x3Eu) == m->stuck_addr) {
-        v = (uint16_t)((v & ~m->stuck_mask) | m->stuck_set);
-    }
-    return v;
+    return sim_stuck_bit_apply(&m->stuck, (uint8_t)(addr & 0x3Eu), v);
 }
 
 static void m_write(void *model, uint8_t addr, uint8_t value, uint64_t t)
@@ -731,14 +728,7 @@ static int p_fault(void *model, enum sim_fault f, const struct sim_fault_arg *a,
     case SIM_FAULT_DEVICE_ERROR:
         m->fault_status = on ? (a->mask != 0u ? a->mask : ST_ALARM1) : 0u;
         return INC_OK;
-    case SIM_FAULT_STUCK_BIT:
-        if (a->bit > 15u) {
-            return INC_ERR_INVAL;
-        }
-        m->stuck_addr = (uint8_t)(a->addr & 0x3Eu);
-        m->stuck_mask = on ? (uint16_t)(1u << a->bit) : 0u;
-        m->stuck_set = a->level ? m->stuck_mask : 0u;
-        return INC_OK;
+    case SIM_FAULT_STUCK_BIT: return sim_stuck_bit_fault(&m->stuck, a, on, 0x3Eu, 16u);
     default: return INC_ERR_UNSUPPORTED;
     }
 }

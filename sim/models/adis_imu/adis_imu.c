@@ -672,10 +672,7 @@ static uint16_t read_word_reg(struct sim_adis_imu *m, uint8_t even)
 static uint16_t read_word(struct sim_adis_imu *m, uint8_t even)
 {
     uint16_t v = read_word_reg(m, even);
-    if (m->stuck_mask != 0u && even == m->stuck_addr) {
-        v = (uint16_t)((v & ~m->stuck_mask) | m->stuck_set);
-    }
-    return v;
+    return sim_stuck_bit_apply(&m->stuck, even, v);
 }
 
 static uint16_t op_read(void *model, uint8_t addr, uint64_t t)
@@ -998,14 +995,7 @@ static int p_fault(void *model, enum sim_fault f, const struct sim_fault_arg *a,
     case SIM_FAULT_DEVICE_ERROR:
         m->fault_diag = on ? (a->mask != 0u ? a->mask : FAULT_DIAG_DEFAULT) : 0u;
         return INC_OK;
-    case SIM_FAULT_STUCK_BIT:
-        if (a->bit > 15u) {
-            return INC_ERR_INVAL;
-        }
-        m->stuck_addr = (uint8_t)(a->addr & 0x7Eu);
-        m->stuck_mask = on ? (uint16_t)(1u << a->bit) : 0u;
-        m->stuck_set = a->level ? m->stuck_mask : 0u;
-        return INC_OK;
+    case SIM_FAULT_STUCK_BIT: return sim_stuck_bit_fault(&m->stuck, a, on, 0x7Eu, 16u);
     default: return INC_ERR_UNSUPPORTED;
     }
 }

@@ -300,10 +300,7 @@ static uint8_t peek_reg(const struct sim_sca3000 *m, uint8_t a)
 static uint8_t peek(const struct sim_sca3000 *m, uint8_t a)
 {
     uint8_t v = peek_reg(m, a);
-    if (m->stuck_mask != 0u && a == m->stuck_addr) {
-        v = (uint8_t)((v & ~m->stuck_mask) | m->stuck_set);
-    }
-    return v;
+    return (uint8_t)sim_stuck_bit_apply(&m->stuck, a, v);
 }
 
 /* The byte of register a has been clocked out completely: apply the read's side effect. */
@@ -721,14 +718,7 @@ static int p_fault(void *model, enum sim_fault f, const struct sim_fault_arg *a,
             m->faults &= (uint8_t)~SIM_SCA3000_FAULT_EEPROM;
         }
         return INC_OK;
-    case SIM_FAULT_STUCK_BIT:
-        if (a->bit > 7u) {
-            return INC_ERR_INVAL;
-        }
-        m->stuck_addr = (uint8_t)(a->addr & 0x3Fu);
-        m->stuck_mask = on ? (uint8_t)(1u << a->bit) : 0u;
-        m->stuck_set = a->level ? m->stuck_mask : 0u;
-        return INC_OK;
+    case SIM_FAULT_STUCK_BIT: return sim_stuck_bit_fault(&m->stuck, a, on, 0x3Fu, 8u);
     default: return INC_ERR_UNSUPPORTED;
     }
 }

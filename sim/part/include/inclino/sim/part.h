@@ -135,6 +135,24 @@ bool sim_part_fault_active(const struct sim_part *p, enum sim_fault f);
 uint16_t sim_part_peek(const struct sim_part *p, uint8_t addr);
 void sim_part_poke(struct sim_part *p, uint8_t addr, uint16_t value);
 
+/* A stuck data bit (SIM_FAULT_STUCK_BIT), the state every model keeps for it: one register
+ * (the model's addressing) whose bit reads a fixed level. mask 0: no bit stuck. */
+struct sim_stuck_bit {
+    uint8_t addr;
+    uint16_t mask, set; /* the bit, and the level it reads (mask or 0) */
+};
+
+/* Inject (on) or clear the stuck bit of *arg: the address masked with addr_mask, a bit below
+ * width (8 or 16). INC_ERR_INVAL for a bit beyond the width (nothing changes). */
+int sim_stuck_bit_fault(struct sim_stuck_bit *s, const struct sim_fault_arg *arg, bool on,
+                        uint8_t addr_mask, unsigned width);
+
+/* v as the bus reads register addr: the stuck bit applied when it is that register's. */
+static inline uint16_t sim_stuck_bit_apply(const struct sim_stuck_bit *s, uint8_t addr, uint16_t v)
+{
+    return s->mask != 0u && addr == s->addr ? (uint16_t)((v & ~s->mask) | s->set) : v;
+}
+
 /* The parameters the conformance suite uses for each fault (docs/sim.md). */
 struct sim_fault_arg sim_fault_default(enum sim_fault f);
 /* "miso_stuck_high", ...; "?" out of range. */

@@ -35,6 +35,7 @@
 
 #include "inclino/sim/adis_core.h"
 #include "inclino/sim/inertial.h"
+#include "inclino/sim/part.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -98,9 +99,8 @@ struct sim_adis16255 {
     bool self_test_fail; /* test back door: the next self-tests fail */
     int ev_sample, ev_dr_off, ev_cmd, ev_st;
     /* injected faults (sim/part.h, sim_adis16255_part) */
-    uint16_t fault_status;          /* STATUS bits held on (device error) */
-    uint8_t stuck_addr;             /* register with a stuck bit (stuck_mask != 0) */
-    uint16_t stuck_mask, stuck_set; /* its bit and the level it reads */
+    uint16_t fault_status;      /* STATUS bits held on (device error) */
+    struct sim_stuck_bit stuck; /* an injected stuck data bit */
     /* statistics */
     uint32_t samples, commands, dr_pulses, frame_errors;
 };

@@ -32,6 +32,7 @@
 
 #include "inclino/sim/adis_core.h"
 #include "inclino/sim/inertial.h"
+#include "inclino/sim/part.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -112,11 +113,10 @@ struct sim_adis_imu {
     struct sim_physics physics_hook;
     struct sim_error_model error_hook;
     /* injected faults (sim/part.h, sim_adis_imu_part) */
-    bool dr_suppressed;             /* no data-ready pulses */
-    uint16_t fault_diag;            /* DIAG_STAT bits held on (device error) */
-    uint16_t true_prod_id;          /* PROD_ID while a wrong identity is shown */
-    uint8_t stuck_addr;             /* register with a stuck bit (stuck_mask != 0) */
-    uint16_t stuck_mask, stuck_set; /* its bit and the level it reads */
+    bool dr_suppressed;         /* no data-ready pulses */
+    uint16_t fault_diag;        /* DIAG_STAT bits held on (device error) */
+    uint16_t true_prod_id;      /* PROD_ID while a wrong identity is shown */
+    struct sim_stuck_bit stuck; /* an injected stuck data bit */
     /* statistics */
     uint64_t samples;
     uint32_t dr_pulses, commands, flash_writes, spi_failures, protocol_errors;

@@ -56,6 +56,7 @@
 #include <stdint.h>
 
 #include "inclino/sim/inertial.h"
+#include "inclino/sim/part.h"
 #include "inclino/sim/spi_slave.h"
 
 #ifdef __cplusplus
@@ -158,10 +159,9 @@ struct sim_sca3000 {
     bool attached;
 
     /* injected faults (sim/part.h, sim_sca3000_part) */
-    bool int_suppressed;           /* the INT line never goes active */
-    bool wrong_id;                 /* REVID reads revid + 1 */
-    uint8_t stuck_addr;            /* register with a stuck bit (stuck_mask != 0) */
-    uint8_t stuck_mask, stuck_set; /* its bit and the level it reads */
+    bool int_suppressed;        /* the INT line never goes active */
+    bool wrong_id;              /* REVID reads revid + 1 */
+    struct sim_stuck_bit stuck; /* an injected stuck data bit */
 
     /* statistics and diagnostics */
     uint32_t frames, corrupt_frames, writes_applied, protocol_errors;
