@@ -69,8 +69,12 @@ int tool_summary_end(const char *status, int exit_status)
         printf(" %s=%s", summary_keys[i], summary_values[i]);
     }
     printf("\n");
-    fflush(stdout);
     summary_n = 0;
+    /* A report that did not reach stdout (a full disk, a closed pipe) is a failed run. */
+    if (fflush(stdout) != 0 || ferror(stdout)) {
+        (void)fprintf(stderr, "%s: write error on standard output\n", summary_tool);
+        return exit_status != 0 ? exit_status : 1;
+    }
     return exit_status;
 }
 

@@ -28,7 +28,9 @@ void tool_summary_add(const char *key, const char *fmt, ...)
 #endif
     ;
 /* Prints the line (status first, after tool) to stdout and flushes; status is "ok", "fail" or
- * "error". Returns exit_status, so that `return tool_summary_end("ok", 0);` ends main. */
+ * "error". Returns exit_status, so that `return tool_summary_end("ok", 0);` ends main; when
+ * stdout has a write error (a full disk: everything the tool printed is suspect) it says so on
+ * stderr and returns exit_status, or 1 when that was 0. */
 int tool_summary_end(const char *status, int exit_status);
 /* Shorthand for a run that stops on an error: error=<error>, then tool_summary_end("error",
  * exit_status). */
