@@ -1,6 +1,6 @@
 // kf_bench - figures of docs/benchmarks.md, "Kalman and tilt" (host tool).
 //
-//   kf_bench step [--runs R] [--n N] [--seed S]
+//   kf_bench step [--runs R] [--n N] [--seed S] [--k K] [--step-g G] [--c-frac F] [--more 0|1]
 //       Tilt steps of 5 and 1 deg (pitch) at 819.2 SPS with engine-idle vibration, passenger
 //       bumps and sensor noise (the vibration model below, docs/kalman.md); each accelerometer
 //       axis goes through a moving average of N (inclino_avg), the fixed scalar Kalman filter
@@ -39,6 +39,7 @@ extern "C" {
 #include "inclino/kf.h"
 #include "inclino/kf_adapt.h"
 #include "inclino/tilt.h"
+#include "inclino/tool_cli.h"
 #include "inclino/tool_summary.h"
 }
 
@@ -264,17 +265,42 @@ FixedKf make_fixed(uint32_t n)
     return FixedKf(pf(q), pf(r), pf(r));
 }
 
-long arg_long(int argc, char **argv, const char *name, long def)
+// Command-line options (tools/lib/cli: decimal, whole field, range-checked; a refusal names the
+// option and its range). The ranges keep every derived constant inside the filters' documented
+// ranges: N >= 2 (K = 2 / (N + 1) < 1), window k in 2..KF_ADAPT_WIN_MAX, C fraction in [0, 1].
+struct Options {
+    uint32_t runs = 0, n = 82, k = 32;
+    uint64_t seed = 1;
+    double stepg = 0.0872, cfrac = 0.1;
+    uint32_t more = 0;
+};
+constexpr uint32_t kRunsMax = 10000;
+constexpr uint32_t kNMax = 4096;
+constexpr uint64_t kCostMax = 100000000; // updates of `cost` (400 MB of input at most)
+
+// Options from argv[2..]; `allowed` lists the options of the command ("--runs --n ...").
+int parse_options(int argc, char **argv, const std::string &allowed, Options *o)
 {
-    for (int i = 2; i + 1 < argc; i++)
-        if (std::strcmp(argv[i], name) == 0) return std::strtol(argv[i + 1], nullptr, 0);
-    return def;
-}
-double arg_double(int argc, char **argv, const char *name, double def)
-{
-    for (int i = 2; i + 1 < argc; i++)
-        if (std::strcmp(argv[i], name) == 0) return std::strtod(argv[i + 1], nullptr);
-    return def;
+    for (int i = 2; i < argc; i++) {
+        const std::string name(argv[i]);
+        if (name.rfind("--", 0) != 0 || allowed.find(name + " ") == std::string::npos) {
+            cli_error("%s: unknown option for '%s' (options: %s)", argv[i], argv[1],
+                      allowed.c_str());
+            return INC_ERR_INVAL;
+        }
+        const char *v = cli_value(argc, argv, &i);
+        int rc = INC_ERR_INVAL;
+        if (v == nullptr) return INC_ERR_INVAL;
+        if (name == "--runs") rc = cli_parse_u32("--runs", v, 1, kRunsMax, &o->runs);
+        if (name == "--n") rc = cli_parse_u32("--n", v, 2, kNMax, &o->n);
+        if (name == "--k") rc = cli_parse_u32("--k", v, 2, KF_ADAPT_WIN_MAX, &o->k);
+        if (name == "--seed") rc = cli_parse_u64("--seed", v, 0, UINT64_MAX, &o->seed);
+        if (name == "--step-g") rc = cli_parse_double("--step-g", v, 0.0, 2.0, 0, &o->stepg);
+        if (name == "--c-frac") rc = cli_parse_double("--c-frac", v, 0.0, 1.0, 0, &o->cfrac);
+        if (name == "--more") rc = cli_parse_u32("--more", v, 0, 1, &o->more);
+        if (rc != INC_OK) return rc;
+    }
+    return INC_OK;
 }
 
 // ---- the tuning procedure of docs/kalman.md ----------------------------------------------------
@@ -358,11 +384,30 @@ std::array<kf_adapt_config, 3> adapt_tuned(uint32_t n, uint32_t k, double step, 
     return c;
 }
 
+int usage_error()
+{
+    tool_summary_add("error", "usage");
+    return 2;
+}
+
+// Every axis's constants accepted by kf_adapt_init (the filters would refuse them otherwise).
+bool configs_valid(const std::array<kf_adapt_config, 3> &c)
+{
+    for (const auto &cfg : c) {
+        kf_adapt f{};
+        if (kf_adapt_init(&f, &cfg) != INC_OK) return false;
+    }
+    return true;
+}
+
 int cmd_tune(int argc, char **argv)
 {
-    const int runs = static_cast<int>(arg_long(argc, argv, "--runs", 30));
-    const uint32_t n = static_cast<uint32_t>(arg_long(argc, argv, "--n", 82));
-    const uint64_t seed = static_cast<uint64_t>(arg_long(argc, argv, "--seed", 1));
+    Options o;
+    o.runs = 30;
+    if (parse_options(argc, argv, "--runs --n --seed ", &o) != INC_OK) return usage_error();
+    const int runs = static_cast<int>(o.runs);
+    const uint32_t n = o.n;
+    const uint64_t seed = o.seed;
     MaFilter ma(n);
     const Result rm = evaluate(ma, 5.0, runs, seed);
     std::printf("moving average N = %u: rms %.4f deg, rise %.1f ms\n", n, rm.rms, rm.rise * 1e3);
@@ -371,7 +416,9 @@ int cmd_tune(int argc, char **argv)
         for (double km : {0.75, 1.0})
             for (double st : {0.0, 0.04, 0.06, 0.0872, 0.12})
                 for (double cf : {0.0, 0.1}) {
-                    AdaptKf ak(adapt_tuned(n, k, st, cf, seed + 99991u, km));
+                    const auto cfg = adapt_tuned(n, k, st, cf, seed + 99991u, km);
+                    if (!configs_valid(cfg)) continue; // not a filter kf_adapt accepts
+                    AdaptKf ak(cfg);
                     const Result r = evaluate(ak, 5.0, runs, seed);
                     std::printf("k %2u Ks x %.2f step %.3f Cfrac %.1f: rms %.4f rise %.1f ms%s\n",
                                 k, km, st, cf, r.rms, r.rise * 1e3,
@@ -387,13 +434,24 @@ int cmd_tune(int argc, char **argv)
 
 int cmd_step(int argc, char **argv)
 {
-    const int runs = static_cast<int>(arg_long(argc, argv, "--runs", 100));
-    const uint32_t n = static_cast<uint32_t>(arg_long(argc, argv, "--n", 82));
-    const uint64_t seed = static_cast<uint64_t>(arg_long(argc, argv, "--seed", 1));
-    const uint32_t k = static_cast<uint32_t>(arg_long(argc, argv, "--k", 32));
-    const double stepg = arg_double(argc, argv, "--step-g", 0.0872);
-    const double cfrac = arg_double(argc, argv, "--c-frac", 0.1);
+    Options o;
+    o.runs = 100;
+    if (parse_options(argc, argv, "--runs --n --seed --k --step-g --c-frac --more ", &o) != INC_OK)
+        return usage_error();
+    const int runs = static_cast<int>(o.runs);
+    const uint32_t n = o.n;
+    const uint64_t seed = o.seed;
+    const uint32_t k = o.k;
+    const double stepg = o.stepg;
+    const double cfrac = o.cfrac;
     const auto ac = adapt_tuned(n, k, stepg, cfrac, seed + 99991u);
+    if (!configs_valid(ac)) {
+        cli_error("the tuned adaptive filter is outside kf_adapt's ranges (--k %u, --step-g %g, "
+                  "--c-frac %g)",
+                  k, stepg, cfrac);
+        tool_summary_add("error", "ERR_INVAL");
+        return 1;
+    }
     MaFilter ma(n);
     FixedKf fk = make_fixed(n);
     AdaptKf ak(ac);
@@ -408,7 +466,7 @@ int cmd_step(int argc, char **argv)
         "| step | filter | rms error 4..8 s after (deg) | mean error (deg) | rms error 0.1..1 s after (deg) | 10-90 %% rise (ms) | step to 90 %% (ms) |\n");
     std::printf("|---|---|---:|---:|---:|---:|---:|\n");
     std::vector<double> steps = {5.0, 1.0};
-    if (arg_long(argc, argv, "--more", 0)) steps = {5.0, 1.0, 2.0, 10.0, 20.0};
+    if (o.more != 0u) steps = {5.0, 1.0, 2.0, 10.0, 20.0};
     for (double step : steps) {
         Filter *fs[3] = {&ma, &fk, &ak};
         const char *names[3] = {"moving average", "fixed Kalman", "adaptive Kalman"};
@@ -433,8 +491,11 @@ int cmd_step(int argc, char **argv)
 
 // ---- cost (callgrind) -------------------------------------------------------------------------
 
-int cmd_cost(const char *which, long count)
+int cmd_cost(const char *which, const char *count_text)
 {
+    uint64_t count64 = 0;
+    if (cli_parse_u64("COUNT", count_text, 1, kCostMax, &count64) != INC_OK) return usage_error();
+    const long count = static_cast<long>(count64);
     std::mt19937 g(5);
     std::normal_distribution<double> nd(0.0, 1.0);
     std::vector<int32_t> z(static_cast<size_t>(count));
@@ -532,12 +593,15 @@ int run_command(int argc, char **argv)
     if (argc >= 2) tool_summary_add("command", "%s", argv[1]);
     if (argc >= 2 && std::strcmp(argv[1], "step") == 0) return cmd_step(argc, argv);
     if (argc >= 2 && std::strcmp(argv[1], "tune") == 0) return cmd_tune(argc, argv);
-    if (argc >= 4 && std::strcmp(argv[1], "cost") == 0)
-        return cmd_cost(argv[2], std::strtol(argv[3], nullptr, 0));
-    std::fprintf(
-        stderr,
-        "usage: kf_bench step [--runs R] [--n N] [--seed S] [--k K --C C --D D --A A --B B --p0 P]\n"
-        "       kf_bench cost ma|kf1|kf2|kf4|adapt|tilt-feedback|tilt-printed|tilt-kf2 COUNT\n");
+    if (argc == 4 && std::strcmp(argv[1], "cost") == 0) return cmd_cost(argv[2], argv[3]);
+    std::fprintf(stderr,
+                 "usage: kf_bench step [--runs 1..10000] [--n 2..4096] [--seed S] [--k 2..%u]\n"
+                 "                     [--step-g 0..2] [--c-frac 0..1] [--more 0|1]\n"
+                 "       kf_bench tune [--runs 1..10000] [--n 2..4096] [--seed S]\n"
+                 "       kf_bench cost ma|kf1|kf2|kf4|adapt|tilt-feedback|tilt-printed|tilt-kf2 "
+                 "COUNT(1..%llu)\n",
+                 static_cast<unsigned>(KF_ADAPT_WIN_MAX),
+                 static_cast<unsigned long long>(kCostMax));
     tool_summary_add("error", "usage");
     return 2;
 }
@@ -546,6 +610,7 @@ int run_command(int argc, char **argv)
 int main(int argc, char **argv)
 {
     tool_summary_begin("kf_bench");
+    cli_set_program("kf_bench");
     const int st = run_command(argc, argv);
     return tool_summary_end(st == 0 ? "ok" : "error", st);
 }

@@ -8,6 +8,7 @@
  *                      nothing: run it under callgrind, counting only spi_transfer, to get the
  *                      engine's own instructions per frame (the HAL's are the port's)
  */
+#include "inclino/tool_cli.h"
 #include "inclino/tool_summary.h"
 #include "inclino/sim/board.h"
 #include "inclino/sim/loopback.h"
@@ -19,6 +20,8 @@
 #include <string.h>
 
 #define FRAMES 64u
+/* Frames of `cost` at most: 10^9 (minutes under callgrind), never a wrapped 2^64 - 1. */
+#define COST_MAX 1000000000u
 
 static int bus_table(void)
 {
@@ -174,16 +177,20 @@ int main(int argc, char **argv)
 {
     int st;
     tool_summary_begin("spi_bench");
-    if (argc >= 2 && strcmp(argv[1], "bus") == 0) {
+    cli_set_program("spi_bench");
+    if (argc == 2 && strcmp(argv[1], "bus") == 0) {
         tool_summary_add("command", "bus");
         st = bus_table();
         return tool_summary_end(st == 0 ? "ok" : "fail", st);
     }
-    if (argc >= 3 && strcmp(argv[1], "cost") == 0) {
+    if (argc == 3 && strcmp(argv[1], "cost") == 0) {
+        uint64_t n;
         tool_summary_add("command", "cost");
-        st = cost(strtoul(argv[2], NULL, 10));
+        if (cli_parse_u64("N", argv[2], 1, COST_MAX, &n) != 0)
+            return tool_summary_error("usage", 2);
+        st = cost((unsigned long)n);
         return tool_summary_end(st == 0 ? "ok" : "error", st);
     }
-    fprintf(stderr, "usage: spi_bench bus | spi_bench cost N\n");
+    fprintf(stderr, "usage: spi_bench bus | spi_bench cost N (1..%u)\n", COST_MAX);
     return tool_summary_error("usage", 2);
 }

@@ -21,6 +21,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "inclino/tool_cli.h"
 #include "inclino/tool_summary.h"
 #include "inclino/error.h"
 #include "inclino/sim/allan.h"
@@ -52,11 +53,46 @@ static void usage(void)
         "               [--gnuplot plot.gp [--png plot.png]] [--quiet]\n");
 }
 
-static int num(const char *s, double *v)
+/* Every number through tools/lib/cli: decimal, the whole field, inside the stated range. */
+static int parse_value(const char *o, const char *v, struct args *a)
 {
-    char *end;
-    *v = strtod(s, &end);
-    return (end != s && *end == '\0' && isfinite(*v)) ? 0 : -1;
+    uint32_t u = 0;
+    int rc;
+    if (strcmp(o, "--col") == 0) {
+        rc = cli_parse_u32(o, v, 0, 999, &u);
+        a->col = u;
+    } else if (strcmp(o, "--time-col") == 0) {
+        rc = cli_parse_int(o, v, 0, 999, &a->time_col);
+    } else if (strcmp(o, "--rate-hz") == 0) {
+        rc = cli_parse_double(o, v, 1e-6, 1e9, 0, &a->rate_hz);
+    } else if (strcmp(o, "--scale") == 0) {
+        rc = cli_parse_double(o, v, -1e300, 1e300, 0, &a->scale);
+        if (rc == INC_OK && a->scale == 0.0) {
+            cli_error("%s: '%s' is out of range (accepted: a non-zero decimal number in "
+                      "-1e300..1e300)",
+                      o, v);
+            rc = INC_ERR_RANGE;
+        }
+    } else if (strcmp(o, "--seconds") == 0) {
+        rc = cli_parse_double(o, v, 1e-3, 1e7, 0, &a->seconds);
+    } else if (strcmp(o, "--sample-hz") == 0) {
+        rc = cli_parse_double(o, v, 1e-3, 1e6, 0, &a->sample_hz);
+    } else if (strcmp(o, "--seed") == 0) {
+        uint64_t seed = 0;
+        rc = cli_parse_u64(o, v, 0, UINT64_MAX, &seed);
+        a->seed = seed;
+    } else if (strcmp(o, "--per-decade") == 0) {
+        rc = cli_parse_u32(o, v, 1, 100, &u);
+        a->per_decade = u;
+    } else if (strcmp(o, "--min-clusters") == 0) {
+        rc = cli_parse_double(o, v, 2.0, 1e12, 0, &a->min_clusters);
+    } else if (strcmp(o, "--min-rel-err") == 0) {
+        rc = cli_parse_double(o, v, 1e-6, 0.999999, 0, &a->max_rel_err);
+    } else {
+        cli_error("unknown option %s", o);
+        rc = INC_ERR_INVAL;
+    }
+    return rc;
 }
 
 static int parse(int argc, char **argv, struct args *a)
@@ -71,8 +107,7 @@ static int parse(int argc, char **argv, struct args *a)
     a->png = "allan.png";
     for (i = 1; i < argc; i++) {
         const char *o = argv[i];
-        const char *v = i + 1 < argc ? argv[i + 1] : NULL;
-        double d = 0.0;
+        const char *v;
         if (strcmp(o, "--no-quant") == 0) {
             a->quant = 0;
             continue;
@@ -85,11 +120,10 @@ static int parse(int argc, char **argv, struct args *a)
             a->quiet = 1;
             continue;
         }
+        v = cli_value(argc, argv, &i);
         if (v == NULL) {
-            fprintf(stderr, "allan: %s needs a value\n", o);
             return -1;
         }
-        i++;
         if (strcmp(o, "--csv") == 0)
             a->csv = v;
         else if (strcmp(o, "--sim") == 0)
@@ -104,33 +138,12 @@ static int parse(int argc, char **argv, struct args *a)
             a->png = v;
         else if (strcmp(o, "--unit") == 0)
             a->unit = v;
-        else if (num(v, &d) != 0) {
-            fprintf(stderr, "allan: %s: '%s' is not a number\n", o, v);
+        else if (parse_value(o, v, a) != INC_OK)
             return -1;
-        } else if (strcmp(o, "--col") == 0 && d >= 0 && d < 1000 && d == floor(d))
-            a->col = (unsigned)d;
-        else if (strcmp(o, "--time-col") == 0 && d >= 0 && d < 1000 && d == floor(d))
-            a->time_col = (int)d;
-        else if (strcmp(o, "--rate-hz") == 0 && d > 0)
-            a->rate_hz = d;
-        else if (strcmp(o, "--scale") == 0 && d != 0)
-            a->scale = d;
-        else if (strcmp(o, "--seconds") == 0 && d > 0 && d <= 1e7)
-            a->seconds = d;
-        else if (strcmp(o, "--sample-hz") == 0 && d > 0 && d <= 1e6)
-            a->sample_hz = d;
-        else if (strcmp(o, "--seed") == 0 && d >= 0 && d == floor(d))
-            a->seed = (unsigned long long)d;
-        else if (strcmp(o, "--per-decade") == 0 && d >= 1 && d <= 100 && d == floor(d))
-            a->per_decade = (unsigned)d;
-        else if (strcmp(o, "--min-clusters") == 0 && d >= 2)
-            a->min_clusters = d;
-        else if (strcmp(o, "--min-rel-err") == 0 && d > 0 && d < 1)
-            a->max_rel_err = d;
-        else {
-            fprintf(stderr, "allan: bad option or value: %s %s\n", o, v);
-            return -1;
-        }
+    }
+    if (a->gp != NULL && a->out == NULL) {
+        fprintf(stderr, "allan: --gnuplot needs --out (the script plots that CSV)\n");
+        return -1;
     }
     if ((a->csv == NULL) == (a->sim == NULL)) {
         fprintf(stderr, "allan: give exactly one of --csv and --sim\n");
@@ -199,6 +212,55 @@ static int simulate(const struct args *a, double **y, size_t *n, double *dt,
     return INC_OK;
 }
 
+/* --out, --svg, --gnuplot through the safe writer (tools/lib/cli): 0, or 3 when one of them
+ * could not be written (its target left as it was). */
+static int write_outputs(const struct args *a, const struct sim_allan_point *pts, size_t count,
+                         const double *theory, const struct sim_allan_readoff *r)
+{
+    const char *inputs[1];
+    struct cli_out o;
+    int err = 0;
+    inputs[0] = a->csv;
+    if (a->out != NULL) {
+        if (cli_out_open(&o, "--out", a->out, inputs, 1) != INC_OK) {
+            err = 3;
+        } else if (sim_allan_write_csv(o.f, pts, count, theory) != INC_OK) {
+            fprintf(stderr, "allan: cannot write %s\n", a->out);
+            cli_out_discard(&o);
+            err = 3;
+        } else if (cli_out_close(&o) != INC_OK) {
+            err = 3;
+        }
+    }
+    if (a->svg != NULL) {
+        if (cli_out_open(&o, "--svg", a->svg, inputs, 1) != INC_OK) {
+            err = 3;
+        } else if (sim_allan_write_svg(o.f, pts, count, theory, r,
+                                       a->sim != NULL ? "Allan deviation (simulated)"
+                                                      : "Allan deviation",
+                                       a->unit) != INC_OK) {
+            fprintf(stderr, "allan: cannot write %s\n", a->svg);
+            cli_out_discard(&o);
+            err = 3;
+        } else if (cli_out_close(&o) != INC_OK) {
+            err = 3;
+        }
+    }
+    if (a->gp != NULL) {
+        if (cli_out_open(&o, "--gnuplot", a->gp, inputs, 1) != INC_OK) {
+            err = 3;
+        } else if (sim_allan_write_gnuplot(o.f, a->out, a->png, a->theory != 0, "Allan deviation",
+                                           a->unit) != INC_OK) {
+            fprintf(stderr, "allan: cannot write %s\n", a->gp);
+            cli_out_discard(&o);
+            err = 3;
+        } else if (cli_out_close(&o) != INC_OK) {
+            err = 3;
+        }
+    }
+    return err;
+}
+
 int main(int argc, char **argv)
 {
     struct args a;
@@ -210,6 +272,7 @@ int main(int argc, char **argv)
     size_t n = 0, count = 0, i;
     int err;
     tool_summary_begin("allan");
+    cli_set_program("allan");
     if (parse(argc, argv, &a) != 0) {
         usage();
         return tool_summary_error("usage", 1);
@@ -304,44 +367,7 @@ int main(int argc, char **argv)
             }
         }
     }
-    err = 0;
-    if (a.out != NULL) {
-        FILE *f = fopen(a.out, "w");
-        if (f == NULL || sim_allan_write_csv(f, pts, count, theory) != INC_OK) {
-            fprintf(stderr, "allan: cannot write %s\n", a.out);
-            err = 3;
-        }
-        if (f != NULL) {
-            fclose(f);
-        }
-    }
-    if (a.svg != NULL) {
-        FILE *f = fopen(a.svg, "w");
-        if (f == NULL ||
-            sim_allan_write_svg(f, pts, count, theory, &r,
-                                a.sim != NULL ? "Allan deviation (simulated)" : "Allan deviation",
-                                a.unit) != INC_OK) {
-            fprintf(stderr, "allan: cannot write %s\n", a.svg);
-            err = 3;
-        }
-        if (f != NULL) {
-            fclose(f);
-        }
-    }
-    if (a.gp != NULL) {
-        FILE *f = fopen(a.gp, "w");
-        if (a.out == NULL) {
-            fprintf(stderr, "allan: --gnuplot needs --out (the script plots that CSV)\n");
-            err = 1;
-        } else if (f == NULL || sim_allan_write_gnuplot(f, a.out, a.png, a.theory != 0,
-                                                        "Allan deviation", a.unit) != INC_OK) {
-            fprintf(stderr, "allan: cannot write %s\n", a.gp);
-            err = 3;
-        }
-        if (f != NULL) {
-            fclose(f);
-        }
-    }
+    err = write_outputs(&a, pts, count, theory, &r);
     free(theory);
     free(pts);
     tool_summary_add("samples", "%zu", n);
@@ -361,7 +387,7 @@ int main(int argc, char **argv)
         tool_summary_add("model_adev_1s", "%.5g", sim_noise_adev(&ax, 1.0, dt));
     }
     if (err != 0) {
-        tool_summary_add("error", "%s", err == 1 ? "usage" : "io");
+        tool_summary_add("error", "io");
     }
     return tool_summary_end(err == 0 ? "ok" : "error", err);
 }

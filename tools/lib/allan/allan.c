@@ -4,6 +4,11 @@
  * The record's mean is removed before integrating: the second difference cancels a constant
  * exactly in real arithmetic, and removing it keeps theta small, so the differences keep their
  * precision in double over records of 10^7 samples and more.
+ *
+ * The samples are also scaled by 2^-e, e the binary exponent of the largest |y|, and the ADEV by
+ * 2^e at the end: multiplying by a power of two is exact, so results are unchanged, but the mean's
+ * sum and the squares of the differences cannot overflow for finite samples near DBL_MAX (nor
+ * underflow for tiny ones). A result that still is not finite is refused (INC_ERR_RANGE).
  */
 #include "inclino/sim/allan.h"
 
@@ -12,24 +17,50 @@
 
 #include "inclino/error.h"
 
-static double *integrate(const double *y, size_t n, double dt_s)
+/* The binary exponent e of max |y[k]| (frexp: max = f 2^e, 0.5 <= f < 1); 0 when all are 0. */
+static int scale_exponent(const double *y, size_t n)
+{
+    double mx = 0.0;
+    int e = 0;
+    size_t k;
+    for (k = 0; k < n; k++) {
+        const double a = fabs(y[k]);
+        if (a > mx) {
+            mx = a;
+        }
+    }
+    if (mx > 0.0) {
+        (void)frexp(mx, &e);
+    }
+    return e;
+}
+
+/* *out = theta, theta[k] = integral of (y 2^-e - mean) dt: 0, INC_ERR_NO_SPACE, or
+ * INC_ERR_RANGE (not finite; nothing allocated). */
+static int integrate(const double *y, size_t n, double dt_s, int e, double **out)
 {
     double *theta = malloc((n + 1u) * sizeof(*theta));
     double mean = 0.0, acc = 0.0;
     size_t k;
+    *out = NULL;
     if (theta == NULL) {
-        return NULL;
+        return INC_ERR_NO_SPACE;
     }
     for (k = 0; k < n; k++) {
-        mean += y[k];
+        mean += ldexp(y[k], -e);
     }
     mean /= (double)n;
     theta[0] = 0.0;
     for (k = 0; k < n; k++) {
-        acc += (y[k] - mean) * dt_s;
+        acc += (ldexp(y[k], -e) - mean) * dt_s;
         theta[k + 1u] = acc;
     }
-    return theta;
+    if (!isfinite(acc)) {
+        free(theta);
+        return INC_ERR_RANGE;
+    }
+    *out = theta;
+    return INC_OK;
 }
 
 static double avar_m(const double *theta, size_t n, double dt_s, size_t m)
@@ -48,16 +79,17 @@ static double avar_m(const double *theta, size_t n, double dt_s, size_t m)
 double sim_allan_at(const double *y, size_t n, double dt_s, uint64_t m)
 {
     double *theta, v;
+    int e;
     if (y == NULL || !(dt_s > 0.0) || m < 1u || n < 3u || m > (uint64_t)((n - 1u) / 2u)) {
         return -1.0;
     }
-    theta = integrate(y, n, dt_s);
-    if (theta == NULL) {
+    e = scale_exponent(y, n);
+    if (integrate(y, n, dt_s, e, &theta) != INC_OK) {
         return -1.0;
     }
-    v = avar_m(theta, n, dt_s, (size_t)m);
+    v = ldexp(sqrt(avar_m(theta, n, dt_s, (size_t)m)), e);
     free(theta);
-    return sqrt(v);
+    return isfinite(v) ? v : -1.0;
 }
 
 int sim_allan_compute(const double *y, size_t n, double dt_s, const struct sim_allan_opts *opts,
@@ -67,7 +99,7 @@ int sim_allan_compute(const double *y, size_t n, double dt_s, const struct sim_a
     double min_clusters = 10.0, m_limit;
     double *theta;
     size_t k, out = 0, last_m = 0;
-    int err = INC_OK;
+    int err = INC_OK, e;
     if (y == NULL || pts == NULL || count == NULL) {
         return INC_ERR_NULL;
     }
@@ -96,9 +128,10 @@ int sim_allan_compute(const double *y, size_t n, double dt_s, const struct sim_a
     if (m_limit < 1.0) {
         return INC_ERR_RANGE;
     }
-    theta = integrate(y, n, dt_s);
-    if (theta == NULL) {
-        return INC_ERR_NO_SPACE;
+    e = scale_exponent(y, n);
+    err = integrate(y, n, dt_s, e, &theta);
+    if (err != INC_OK) {
+        return err;
     }
     for (k = 0;; k++) {
         const double mf = floor(pow(10.0, (double)k / (double)per_decade) + 0.5);
@@ -117,8 +150,13 @@ int sim_allan_compute(const double *y, size_t n, double dt_s, const struct sim_a
         }
         pts[out].m = m;
         pts[out].tau_s = (double)m * dt_s;
-        pts[out].adev = sqrt(avar_m(theta, n, dt_s, m));
+        pts[out].adev = ldexp(sqrt(avar_m(theta, n, dt_s, m)), e);
         pts[out].err = pts[out].adev / sqrt(2.0 * ((double)n / (double)m - 1.0));
+        if (!isfinite(pts[out].adev) || !isfinite(pts[out].err) || !isfinite(pts[out].tau_s)) {
+            err = INC_ERR_RANGE;
+            out = 0;
+            break;
+        }
         out++;
     }
     free(theta);

@@ -42,13 +42,17 @@ struct sim_allan_opts {
  * to n / min_clusters (duplicates removed). Writes up to max_pts points (ascending tau) and
  * *count. Returns 0; INC_ERR_NULL; INC_ERR_INVAL (n < 4, dt <= 0, bad opts, non-finite sample);
  * INC_ERR_NO_SPACE (more grid points than max_pts: the first max_pts are written);
- * INC_ERR_RANGE (no m fits: record too short). Allocates n + 1 doubles for the duration.
+ * INC_ERR_RANGE (no m fits: record too short; or a result that is not a finite double - the
+ * record is scaled by a power of two (exact) so that finite samples as large as DBL_MAX or as
+ * small as DBL_MIN give finite results, but an ADEV above DBL_MAX, or a dt_s so large that the
+ * integral overflows, is refused, never written as inf; *count is then 0). Allocates n + 1
+ * doubles for the duration.
  */
 int sim_allan_compute(const double *y, size_t n, double dt_s, const struct sim_allan_opts *opts,
                       struct sim_allan_point *pts, size_t max_pts, size_t *count);
 
 /* The overlapping Allan deviation at one cluster size m (1 <= m <= (n - 1) / 2); negative on
- * bad arguments. */
+ * bad arguments or a result that is not finite. */
 double sim_allan_at(const double *y, size_t n, double dt_s, uint64_t m);
 
 struct sim_allan_readoff {
