@@ -172,7 +172,7 @@ int trace_parse_next(FILE *f, unsigned *line, struct trace_record *r, char *msg,
             p = parse_num(p + 1, "t=", UINT64_MAX, &v);
             if (p == NULL) return fail_msg(msg, msg_len, *line, "bad or missing t=");
             r->t_ns = v;
-            p = parse_num(p, "pin=", 0xFFFEu, &v);
+            p = parse_num(p, "pin=", TRACE_PIN_MAX, &v);
             if (p == NULL) return fail_msg(msg, msg_len, *line, "bad or missing pin=");
             r->pin = (unsigned)v;
         } else if (p[0] == 'F' && p[1] == ' ') {
@@ -181,7 +181,7 @@ int trace_parse_next(FILE *f, unsigned *line, struct trace_record *r, char *msg,
             p = parse_num(p + 1, "t=", UINT64_MAX, &v);
             if (p == NULL) return fail_msg(msg, msg_len, *line, "bad or missing t=");
             r->t_ns = v;
-            p = parse_num(p, "cs=", 0xFFFEu, &v);
+            p = parse_num(p, "cs=", TRACE_PIN_MAX, &v);
             if (p == NULL) return fail_msg(msg, msg_len, *line, "bad or missing cs=");
             r->pin = (unsigned)v;
             p = parse_num(p, "bits=", 16u, &v);

@@ -110,13 +110,15 @@ int trace_from_vcd(FILE *vcd, FILE *out, const struct trace_vcd_opts *o, char *m
         o->miso == NULL || o->cs == NULL) {
         return INC_ERR_NULL;
     }
-    if (o->mode > 3u || (o->bits != 8u && o->bits != 16u)) {
+    if (o->mode > 3u || (o->bits != 8u && o->bits != 16u) || o->cs_pin > TRACE_PIN_MAX) {
         return INC_ERR_INVAL;
     }
     cpol = (int)(o->mode >> 1);
     cpha = (int)(o->mode & 1u);
-    fprintf(out, "# inclino-trace 1\n# converted from a VCD capture (mode %u, %u-bit)\n", o->mode,
-            o->bits);
+    if (fprintf(out, "# inclino-trace 1\n# converted from a VCD capture (mode %u, %u-bit)\n",
+                o->mode, o->bits) < 0) {
+        return INC_ERR_IO;
+    }
     while ((got = sim_read_line(vcd, line, sizeof(line))) != SIM_LINE_EOF) {
         char *p = line;
         lineno++;
@@ -231,6 +233,15 @@ int trace_from_vcd(FILE *vcd, FILE *out, const struct trace_vcd_opts *o, char *m
     }
     if (in_defs) {
         return vfail(msg, msg_len, "VCD: no $enddefinitions", UINT64_MAX);
+    }
+    if (cs == 0) { /* the capture ended inside a CS period: keep its words, refuse half a word */
+        if (nb != 0) {
+            return vfail(msg, msg_len, "VCD: capture ends mid-word", t);
+        }
+        if (r.n > 0) {
+            if (trace_write_record(out, &r) != INC_OK) return INC_ERR_IO;
+            records++;
+        }
     }
     return (int)records;
 }

@@ -32,7 +32,8 @@ extern "C" {
 #define TRACE_MAX_WORDS SPI_MAX_FRAMES /* words in one CS period */
 #define TRACE_MAX_IRQS 8u
 #define TRACE_MSG_LEN 200u
-#define TRACE_LINE_MAX 4095u /* characters in one line of a trace, before its newline */
+#define TRACE_LINE_MAX 4095u  /* characters in one line of a trace, before its newline */
+#define TRACE_PIN_MAX 0xFFFEu /* largest cs= / pin= a trace holds (0xFFFF is no pin) */
 
 struct trace_rec;
 
@@ -141,9 +142,12 @@ extern "C" {
 /*
  * Convert a logic-analyser capture in VCD form (PulseView/sigrok, GTKWave, or sim/vcd.h) into a
  * trace: SPI is decoded from the named wires in the given mode and word size, one F record per
- * CS period (time = the CS falling edge; a timescale other than 1 ns is scaled). Periods ending
- * in a partial word are an error naming the time. Returns the number of records written, or
- * INC_ERR_FORMAT with a message (VCD structure, missing wire) / INC_ERR_IO.
+ * CS period (time = the CS falling edge; a timescale other than 1 ns is scaled). A period still
+ * open when the capture ends (CS low at the end of the file) is written like any other. Periods
+ * ending in a partial word - CS rising, or the capture ending, mid-word - are an error naming the
+ * time. Returns the number of records written, or INC_ERR_INVAL (mode, bits, or cs_pin above
+ * TRACE_PIN_MAX, which the trace reader would refuse), INC_ERR_FORMAT with a message (VCD
+ * structure, missing wire) / INC_ERR_IO (a read or write error).
  */
 struct trace_vcd_opts {
     const char *sclk, *mosi, *miso, *cs; /* wire names in the VCD */
