@@ -21,6 +21,8 @@
  * --check (the small CTest run): every mode must complete, rms <= 2.5 x its Allan reference;
  * exit status 1 otherwise.
  */
+#include "inclino/error.h"
+#include "inclino/tool_cli.h"
 #include "rig.h"
 
 #include <math.h>
@@ -139,15 +141,26 @@ int main(int argc, char **argv)
     const char *csv_path = NULL;
     bool check = false;
     FILE *csv = NULL;
+    static struct cli_out csv_out;
     struct sim_noise_axis ax;
     double adev_ref[MODES], tau[3];
     for (i = 1; i < (unsigned)argc; i++) {
         if (strcmp(argv[i], "--check") == 0) {
             check = true;
         } else if (i + 1u < (unsigned)argc && strcmp(argv[i], "--runs") == 0) {
-            runs = (unsigned)strtoul(argv[++i], NULL, 10);
+            uint32_t r = 0;
+            if (cli_parse_u32("--runs", argv[++i], 1, MAX_RUNS, &r) != INC_OK) {
+                v = SIM_ADIS_IMU_VARIANTS;
+                break;
+            }
+            runs = r;
         } else if (i + 1u < (unsigned)argc && strcmp(argv[i], "--seed") == 0) {
-            seed = strtoull(argv[++i], NULL, 10);
+            uint64_t s64 = 0;
+            if (cli_parse_u64("--seed", argv[++i], 0, UINT64_MAX - MAX_RUNS, &s64) != INC_OK) {
+                v = SIM_ADIS_IMU_VARIANTS;
+                break;
+            }
+            seed = s64;
         } else if (i + 1u < (unsigned)argc && strcmp(argv[i], "--variant") == 0) {
             v = variant_of(argv[++i]);
         } else if (i + 1u < (unsigned)argc && strcmp(argv[i], "--csv") == 0) {
@@ -170,12 +183,9 @@ int main(int argc, char **argv)
             return 2;
         }
     }
-    if (csv_path != NULL) {
-        csv = fopen(csv_path, "w");
-        if (csv == NULL) {
-            fprintf(stderr, "bench_gyrocal: cannot write %s\n", csv_path);
-            return 2;
-        }
+    if (csv_path != NULL) { /* the safe writer (tools/lib/cli): every write checked at close */
+        if (cli_out_open(&csv_out, "--csv", csv_path, NULL, 0) != INC_OK) return 2;
+        csv = csv_out.f;
         fprintf(csv, "run,mode,axis,rc,residual_tau_register,residual_tau_with_correction,"
                      "residual_1s_register,estimation_error_register\n");
     }
@@ -224,8 +234,8 @@ int main(int argc, char **argv)
             fprintf(stderr, "%u runs\n", run + 1u);
         }
     }
-    if (csv != NULL) {
-        fclose(csv);
+    if (csv != NULL && cli_out_close(&csv_out) != INC_OK) {
+        return 2;
     }
     printf("Residual gyro bias, simulated ADIS%s, %u seeded runs x 3 axes (seeds %llu..%llu); "
            "failed or refused runs: %u\n\n",
@@ -272,5 +282,6 @@ int main(int argc, char **argv)
         free(res_1s[m]);
         free(res_est[m]);
     }
+    if (cli_stdout_check() != INC_OK) return 2;
     return check && failures != 0u ? 1 : 0;
 }

@@ -456,3 +456,8 @@ int epb_rig_vcd_open(struct epb_rig *r, struct sim_vcd *v, const char *path)
 {
     return sim_vcd_open(v, path, &r->board.bus, SIM_BOARD_SPI_MASK | SIM_PIN_MASK(SIM_BOARD_DR(0)));
 }
+
+int epb_rig_vcd_start(struct epb_rig *r, struct sim_vcd *v, FILE *f)
+{
+    return sim_vcd_start(v, f, &r->board.bus, SIM_BOARD_SPI_MASK | SIM_PIN_MASK(SIM_BOARD_DR(0)));
+}

@@ -21,6 +21,7 @@
 
 #include "inclino/attscore.h"
 #include "inclino/error.h"
+#include "inclino/tool_cli.h"
 #include "inclino/sim/imu_csv.h"
 
 #define MAX_REQ 32
@@ -40,13 +41,15 @@ static void usage(FILE *f)
                "      pitch_max_deg\n");
 }
 
+/* A finite decimal number, the whole field (tools/lib/cli; the caller's message names the
+ * option). */
 static int parse_double(const char *s, double *out)
 {
-    char *end;
-    if (*s == '\0') return -1;
-    errno = 0;
-    *out = strtod(s, &end);
-    return (*end != '\0' || errno != 0 || !isfinite(*out)) ? -1 : 0;
+    int rc;
+    cli_set_quiet(1);
+    rc = cli_parse_double("value", s, -1e300, 1e300, 0, out);
+    cli_set_quiet(0);
+    return rc == INC_OK ? 0 : -1;
 }
 
 static int read_table(const char *path, const struct imu_csv_spec *spec, int n,

@@ -16,6 +16,7 @@
 // otherwise; 2 for bad arguments or a set-up failure.
 extern "C" {
 #include "inclino/error.h"
+#include "inclino/tool_cli.h"
 #include "inclino/tool_summary.h"
 }
 #include "station.hpp"
@@ -94,65 +95,73 @@ void usage()
         "  --vcd-ms MS         length of the VCD window (default 10; a full run would be gigabytes)\n");
 }
 
-bool num(const char *s, double &out)
+// Numbers through tools/lib/cli: decimal, the whole field, inside the option's range.
+bool num(const char *opt, const char *s, double lo, double hi, double &out)
 {
-    if (s == nullptr || *s == '\0') return false;
-    char *end = nullptr;
-    out = std::strtod(s, &end);
-    return *end == '\0' && std::isfinite(out);
+    return cli_parse_double(opt, s, lo, hi, 0, &out) == INC_OK;
 }
 
-bool unum(const char *s, uint64_t &out)
+bool unum(const char *opt, const char *s, uint64_t &out)
 {
-    if (s == nullptr || *s == '\0' || *s == '-') return false;
-    char *end = nullptr;
-    out = std::strtoull(s, &end, 10);
-    return *end == '\0';
+    return cli_parse_u64(opt, s, 0, UINT64_MAX, &out) == INC_OK;
 }
 
 bool parse(int argc, char **argv, Options &o)
 {
     for (int i = 1; i < argc; i++) {
         const std::string a = argv[i];
-        const char *v = i + 1 < argc ? argv[i + 1] : nullptr;
-        auto take = [&](double &d) {
-            i++;
-            return num(v, d);
+        const char *opt = argv[i];
+        auto value = [&]() { return cli_value(argc, argv, &i); };
+        auto take = [&](double lo, double hi, double &d) {
+            const char *v = value();
+            return v != nullptr && num(opt, v, lo, hi, d);
+        };
+        auto text = [&](std::string &dst) {
+            const char *v = value();
+            if (v != nullptr) dst = v;
+            return v != nullptr;
         };
         bool ok = true;
         if (a == "--grade")
-            ok = take(o.grade_pct);
+            ok = take(-200.0, 200.0, o.grade_pct);
         else if (a == "--slope-deg") {
-            ok = take(o.slope_deg);
+            ok = take(-60.0, 60.0, o.slope_deg);
             o.slope_given = true;
         } else if (a == "--roll-deg")
-            ok = take(o.roll_deg);
+            ok = take(-30.0, 30.0, o.roll_deg);
         else if (a == "--temp")
-            ok = take(o.temp_c);
-        else if (a == "--part") {
-            i++;
-            ok = v != nullptr;
-            if (ok) o.part = v;
-        } else if (a == "--part-seed") {
-            i++;
-            ok = unum(v, o.part_seed);
+            ok = take(-40.0, 125.0, o.temp_c);
+        else if (a == "--part")
+            ok = text(o.part);
+        else if (a == "--part-seed") {
+            const char *v = value();
+            ok = v != nullptr && unum(opt, v, o.part_seed);
         } else if (a == "--seed") {
-            i++;
-            ok = unum(v, o.seed);
+            const char *v = value();
+            ok = v != nullptr && unum(opt, v, o.seed);
         } else if (a == "--length")
-            ok = take(o.length_s) && o.length_s > 0.0 && o.length_s <= 3600.0;
+            ok = take(0.001, 3600.0, o.length_s);
         else if (a == "--block-s")
-            ok = take(o.block_s) && o.block_s >= 0.1 && o.block_s <= 600.0;
+            ok = take(0.1, 600.0, o.block_s);
         else if (a == "--face-s")
-            ok = take(o.face_s) && o.face_s >= 0.05 && o.face_s <= 600.0;
+            ok = take(0.05, 600.0, o.face_s);
         else if (a == "--no-tcal")
             o.tcal = false;
         else if (a == "--no-sweep")
             o.sweep = false;
         else if (a == "--tcal-temps") {
-            i++;
-            ok = v != nullptr && std::sscanf(v, "%lf,%lf", &o.t_cold, &o.t_hot) == 2 &&
-                 o.t_cold < 24.0 && o.t_hot > 26.0 && o.t_cold >= -100.0 && o.t_hot <= 200.0;
+            // COLD,HOT: each a decimal number, cold -100..24, hot 26..200 degC
+            const char *v = value();
+            ok = v != nullptr;
+            if (ok) {
+                const std::string all(v);
+                const size_t comma = all.find(',');
+                ok = comma != std::string::npos &&
+                     num("--tcal-temps (cold)", all.substr(0, comma).c_str(), -100.0, 23.999,
+                         o.t_cold) &&
+                     num("--tcal-temps (hot)", all.substr(comma + 1).c_str(), 26.001, 200.0,
+                         o.t_hot);
+            }
         } else if (a == "--no-eol")
             o.eol = false;
         else if (a == "--no-engine")
@@ -160,41 +169,25 @@ bool parse(int argc, char **argv, Options &o)
         else if (a == "--no-bumps")
             o.bumps = false;
         else if (a == "--drive-off")
-            ok = take(o.drive_off_s) && o.drive_off_s >= 0.0;
-        else if (a == "--csv") {
-            i++;
-            ok = v != nullptr;
-            if (ok) o.csv = v;
-        } else if (a == "--est-csv") {
-            i++;
-            ok = v != nullptr;
-            if (ok) o.est_csv = v;
-        } else if (a == "--record-out") {
-            i++;
-            ok = v != nullptr;
-            if (ok) o.record_out = v;
-        } else if (a == "--vcd") {
-            i++;
-            ok = v != nullptr;
-            if (ok) o.vcd = v;
-        } else if (a == "--vcd-ms")
-            ok = take(o.vcd_ms) && o.vcd_ms > 0.0 && o.vcd_ms <= 10000.0;
+            ok = take(0.0, 1e6, o.drive_off_s);
+        else if (a == "--csv")
+            ok = text(o.csv);
+        else if (a == "--est-csv")
+            ok = text(o.est_csv);
+        else if (a == "--record-out")
+            ok = text(o.record_out);
+        else if (a == "--vcd")
+            ok = text(o.vcd);
+        else if (a == "--vcd-ms")
+            ok = take(0.001, 10000.0, o.vcd_ms);
         else if (a == "-h" || a == "--help") {
             usage();
             std::exit(0);
-        } else
+        } else {
+            cli_error("unknown option '%s'", a.c_str());
             ok = false;
-        if (!ok) {
-            std::fprintf(stderr, "epb_demo: bad or missing value for '%s'\n", a.c_str());
-            return false;
         }
-    }
-    if (!(std::fabs(o.grade_pct) <= 200.0) || !(std::fabs(o.slope_deg) <= 60.0) ||
-        !(std::fabs(o.roll_deg) <= 30.0) || !(o.temp_c >= -40.0 && o.temp_c <= 125.0)) {
-        std::fprintf(
-            stderr,
-            "epb_demo: slope within +-60 deg (+-200 %%), roll within +-30 deg, temperature -40..125 degC\n");
-        return false;
+        if (!ok) return false;
     }
     return true;
 }
@@ -246,6 +239,7 @@ int main(int argc, char **argv)
 {
     Options o;
     tool_summary_begin("epb_demo");
+    cli_set_program("epb_demo");
     if (!parse(argc, argv, o)) {
         usage();
         return tool_summary_error("usage", 2);
@@ -406,12 +400,21 @@ int main(int argc, char **argv)
             st.rec.binding.product, st.rec.binding.revision, st.rec.binding.serial);
         if (!o.record_out.empty()) {
             uint8_t img[CALREC_IMAGE_SIZE];
-            FILE *f = std::fopen(o.record_out.c_str(), "wb");
-            if (f == nullptr || calrec_encode(&st.rec, info.seq, img, sizeof img) != INC_OK ||
-                std::fwrite(img, 1, sizeof img, f) != sizeof img || std::fclose(f) != 0) {
-                std::fprintf(stderr, "epb_demo: cannot write %s\n", o.record_out.c_str());
+            cli_out rec_out;
+            if (calrec_encode(&st.rec, info.seq, img, sizeof img) != INC_OK) {
+                std::fprintf(stderr, "epb_demo: the record does not encode\n");
                 return tool_summary_error("io", 2);
             }
+            if (cli_out_open(&rec_out, "--record-out", o.record_out.c_str(), nullptr, 0) !=
+                INC_OK) {
+                return tool_summary_error("io", 2);
+            }
+            if (std::fwrite(img, 1, sizeof img, rec_out.f) != sizeof img) {
+                cli_error("write error on '%s'", o.record_out.c_str());
+                cli_out_discard(&rec_out);
+                return tool_summary_error("io", 2);
+            }
+            if (cli_out_close(&rec_out) != INC_OK) return tool_summary_error("io", 2);
         }
     } else {
         std::printf("\nEnd of line skipped (--no-eol): the simulated flash stays erased\n");
@@ -457,13 +460,23 @@ int main(int argc, char **argv)
     tool_summary_add("calibration", "%s", inc_err_name(epb_rig_app(rig)->cal_status));
     tool_summary_add("calibrated", "%d", app_calibrated(epb_rig_app(rig)) ? 1 : 0);
 
+    // Outputs through the safe writer (tools/lib/cli): a temporary file renamed at the end, every
+    // write checked; a run that stops leaves no half-written output (the discards below).
+    static cli_out csv_out, est_out, vcd_out;
+    struct Discard {
+        ~Discard()
+        {
+            cli_out_discard(&csv_out);
+            cli_out_discard(&est_out);
+            cli_out_discard(&vcd_out);
+        }
+    } discard_on_return;
     FILE *csv = nullptr, *est = nullptr;
     if (!o.csv.empty()) {
-        csv = std::fopen(o.csv.c_str(), "w");
-        if (csv == nullptr) {
-            std::fprintf(stderr, "epb_demo: cannot write %s\n", o.csv.c_str());
+        if (cli_out_open(&csv_out, "--csv", o.csv.c_str(), nullptr, 0) != INC_OK) {
             return tool_summary_error("io", 2);
         }
+        csv = csv_out.f;
         std::fprintf(
             csv,
             "# epb_demo %s, %.3f deg slope, %.1f degC, seed %llu: raw samples (nominal scale)\n",
@@ -473,11 +486,10 @@ int main(int argc, char **argv)
                      pi->temp_lsb_c > 0.0 ? ",temp_c" : "");
     }
     if (!o.est_csv.empty()) {
-        est = std::fopen(o.est_csv.c_str(), "w");
-        if (est == nullptr) {
-            std::fprintf(stderr, "epb_demo: cannot write %s\n", o.est_csv.c_str());
+        if (cli_out_open(&est_out, "--est-csv", o.est_csv.c_str(), nullptr, 0) != INC_OK) {
             return tool_summary_error("io", 2);
         }
+        est = est_out.f;
         std::fprintf(
             est,
             "block,time_s,slope_deg,grade_pct,bound_deg,bound_pct,valid,slope_flags,app_flags,true_deg,"
@@ -486,9 +498,13 @@ int main(int argc, char **argv)
     static struct sim_vcd vcd;
     bool vcd_open = false;
     const double vcd_t0 = epb_rig_now_s(rig);
+    bool vcd_failed = false;
     if (!o.vcd.empty()) {
-        if (epb_rig_vcd_open(rig, &vcd, o.vcd.c_str()) != INC_OK) {
-            std::fprintf(stderr, "epb_demo: cannot write %s\n", o.vcd.c_str());
+        if (cli_out_open(&vcd_out, "--vcd", o.vcd.c_str(), nullptr, 0) != INC_OK) {
+            return tool_summary_error("io", 2);
+        }
+        if (epb_rig_vcd_start(rig, &vcd, vcd_out.f) != INC_OK) {
+            std::fprintf(stderr, "epb_demo: cannot record the VCD\n");
             return tool_summary_error("io", 2);
         }
         vcd_open = true;
@@ -523,7 +539,7 @@ int main(int argc, char **argv)
             std::fprintf(csv, "\n");
         }
         if (vcd_open && (epb_rig_now_s(rig) - vcd_t0) * 1e3 >= o.vcd_ms) {
-            sim_vcd_close(&vcd);
+            vcd_failed = sim_vcd_stop(&vcd) != INC_OK;
             vcd_open = false;
         }
         if (reads > 4u * blocks * cfg.avg_n + 100u) {
@@ -557,15 +573,14 @@ int main(int argc, char **argv)
                 q16(r.sigma_meas_g), q16(r.slope.noise_g), q16(r.slope.accel_bound_g), r.n);
         }
     }
-    if (vcd_open) sim_vcd_close(&vcd);
-    if (csv != nullptr && std::fclose(csv) != 0) {
-        std::fprintf(stderr, "epb_demo: write error %s\n", o.csv.c_str());
+    if (vcd_open) vcd_failed = sim_vcd_stop(&vcd) != INC_OK;
+    if (vcd_failed) {
+        cli_error("write error on '%s'", o.vcd.c_str());
         return tool_summary_error("io", 2);
     }
-    if (est != nullptr && std::fclose(est) != 0) {
-        std::fprintf(stderr, "epb_demo: write error %s\n", o.est_csv.c_str());
-        return tool_summary_error("io", 2);
-    }
+    if (!o.vcd.empty() && cli_out_close(&vcd_out) != INC_OK) return tool_summary_error("io", 2);
+    if (csv != nullptr && cli_out_close(&csv_out) != INC_OK) return tool_summary_error("io", 2);
+    if (est != nullptr && cli_out_close(&est_out) != INC_OK) return tool_summary_error("io", 2);
 
     // ---- Report ------------------------------------------------------------------------------
     const app_result &r = results.back();

@@ -39,6 +39,7 @@
 #include "inclino/simflash.h"
 #include "inclino/sensor.h"
 #include "inclino/tilt.h"
+#include "inclino/tool_cli.h"
 
 #define RAD2DEG (180.0 / 3.14159265358979323846)
 
@@ -541,12 +542,15 @@ static void usage(FILE *f)
     }
 }
 
-static bool opt_num(const char *s, double lo, double hi, double *out)
+/* A number option through tools/lib/cli: decimal, the whole field, in [lo, hi]; the refusal
+ * names the option and the range. */
+static bool opt_num(const char *name, const char *s, double lo, double hi, double *out)
 {
-    double d;
-    if (s == NULL || imu_csv_number(s, &d) != 0 || d < lo || d > hi) return false;
-    *out = d;
-    return true;
+    if (s == NULL) {
+        cli_error("%s needs a value", name);
+        return false;
+    }
+    return cli_parse_double(name, s, lo, hi, 0, out) == INC_OK;
 }
 
 static bool parse_att(const char *s, struct opts *o)
@@ -559,7 +563,7 @@ static bool parse_att(const char *s, struct opts *o)
             strncmp(att_params[i].name, s, (size_t)(eq - s)) == 0) {
             o->att[o->n_att].p = &att_params[i];
             o->n_att++;
-            return opt_num(eq + 1, att_params[i].q30 ? -1.99 : -32767.0,
+            return opt_num(att_params[i].name, eq + 1, att_params[i].q30 ? -1.99 : -32767.0,
                            att_params[i].q30 ? 1.99 : 32767.0, &o->att[o->n_att - 1u].v);
         }
     }
@@ -621,10 +625,10 @@ static int parse_opts(int argc, char **argv, struct opts *o)
             ok = parse_att(v, o);
             a++;
         } else if (strcmp(s, "--gyro-fs") == 0) {
-            ok = opt_num(v, 1.0, 4000.0, &o->gyro_fs);
+            ok = opt_num(s, v, 1.0, 4000.0, &o->gyro_fs);
             a++;
         } else if (strcmp(s, "--acc-fs") == 0) {
-            ok = opt_num(v, 1.0, 16.0, &o->acc_fs);
+            ok = opt_num(s, v, 1.0, 16.0, &o->acc_fs);
             a++;
         } else if (strcmp(s, "--frame") == 0) {
             ok = v != NULL && frame_parse(v, &o->frame);
@@ -644,37 +648,36 @@ static int parse_opts(int argc, char **argv, struct opts *o)
         } else if (strcmp(s, "--blocks") == 0) {
             o->blocks_only = true;
         } else if (strcmp(s, "--block-s") == 0) {
-            ok = opt_num(v, 0.001, 3600.0, &o->block_s);
+            ok = opt_num(s, v, 0.001, 3600.0, &o->block_s);
             a++;
         } else if (strcmp(s, "--rate") == 0) {
-            ok = opt_num(v, 10.0, 10000.0, &o->rate_sps);
+            ok = opt_num(s, v, 10.0, 10000.0, &o->rate_sps);
             a++;
         } else if (strcmp(s, "--gap-factor") == 0) {
-            ok = opt_num(v, 1.01, 1000.0, &o->gap_factor);
+            ok = opt_num(s, v, 1.01, 1000.0, &o->gap_factor);
             a++;
         } else if (strcmp(s, "--revid") == 0) {
-            char *end = NULL;
-            const unsigned long x = v != NULL ? strtoul(v, &end, 0) : 0ul;
-            ok = v != NULL && *v != '\0' && *end == '\0' && x >= 1u && x <= 254u;
-            o->revid = (unsigned)x;
+            uint32_t x = 0;
+            ok = v != NULL && cli_parse_u32(s, v, 1, 254, &x) == INC_OK;
+            o->revid = x;
             a++;
         } else if (strcmp(s, "--nonlin-mg") == 0) {
-            ok = opt_num(v, 0.0, 1000.0, &o->nonlin_mg);
+            ok = opt_num(s, v, 0.0, 1000.0, &o->nonlin_mg);
             a++;
         } else if (strcmp(s, "--temp-comp-mg") == 0) {
-            ok = opt_num(v, 0.0, 1000.0, &o->temp_comp_mg);
+            ok = opt_num(s, v, 0.0, 1000.0, &o->temp_comp_mg);
             a++;
         } else if (strcmp(s, "--temp-uncomp-mg") == 0) {
-            ok = opt_num(v, 0.0, 1000.0, &o->temp_uncomp_mg);
+            ok = opt_num(s, v, 0.0, 1000.0, &o->temp_uncomp_mg);
             a++;
         } else if (strcmp(s, "--offset-mg") == 0) {
-            ok = opt_num(v, 0.0, 1000.0, &o->offset_mg);
+            ok = opt_num(s, v, 0.0, 1000.0, &o->offset_mg);
             a++;
         } else if (strcmp(s, "--sens-ppm") == 0) {
-            ok = opt_num(v, 0.0, 400000.0, &o->sens_ppm);
+            ok = opt_num(s, v, 0.0, 400000.0, &o->sens_ppm);
             a++;
         } else if (strcmp(s, "--noise-mg") == 0) {
-            ok = opt_num(v, 0.0, 1000.0, &o->noise_mg);
+            ok = opt_num(s, v, 0.0, 1000.0, &o->noise_mg);
             a++;
         } else if (strcmp(s, "-h") == 0 || strcmp(s, "--help") == 0) {
             usage(stdout);
@@ -850,8 +853,14 @@ static int est_step(struct est *e, const int32_t g[3], const int32_t acc[3], uns
 /* ---- Main ------------------------------------------------------------------------------------- */
 
 struct counts {
-    size_t rows, gyro_sat, acc_sat, rejected, valid, blocks, gaps, missed;
+    size_t rows, gyro_sat, acc_sat, rejected, valid, blocks, gaps;
+    uint64_t missed; /* exact (a gap's count is below 2^53), never wrapped or clipped at 2^32 */
 };
+
+/* The att estimator runs at a fixed rate and steps over a gap sample by sample: a gap longer than
+ * this (about 20 min at 819.2 SPS, 100 s at 10 kSPS) is refused as a broken time axis rather than
+ * stepped for hours. The other estimators take a gap in one step and have no limit. */
+#define ATT_GAP_MAX 1000000u
 
 static int check_write(FILE *f, const char *name)
 {
@@ -878,9 +887,12 @@ int main(int argc, char **argv)
     double *dts, nominal, limit_deg = 5.0;
     uint32_t rate_mhz, windows;
     bool have_est = false, use_store = false, aiding;
+    static struct cli_out out_file;
     FILE *out;
     size_t i;
-    int err = parse_opts(argc, argv, &o), status = 0;
+    int err, status = 0;
+    cli_set_program("imu_replay");
+    err = parse_opts(argc, argv, &o);
     if (err != 0) {
         usage(stderr);
         return err;
@@ -1017,11 +1029,17 @@ int main(int argc, char **argv)
                                                             : inc_err_name(app.cal_status)),
             aiding ? ", vehicle aiding" : "");
 
-    out = o.out != NULL ? fopen(o.out, "w") : stdout;
-    if (out == NULL) {
-        fprintf(stderr, "imu_replay: cannot write %s (%s)\n", o.out, strerror(errno));
-        rows_free(&t);
-        return 2;
+    /* The output through the safe writer (tools/lib/cli): never the input or the record, a
+     * FIFO, a symlink or a device; a temporary file renamed only when every write succeeded. */
+    {
+        const char *inputs[2];
+        inputs[0] = o.in;
+        inputs[1] = o.record;
+        if (cli_out_open(&out_file, "--out", o.out != NULL ? o.out : "-", inputs, 2) != INC_OK) {
+            rows_free(&t);
+            return 2;
+        }
+        out = out_file.f;
     }
     fprintf(out, "t_s,q_w,q_x,q_y,q_z,roll_deg,pitch_deg,att_bound_deg,att_valid,att_rest,"
                  "att_fault,sat,line,dt_s,gap,accel_x_g,accel_y_g,accel_z_g,gyro_x_dps,"
@@ -1036,17 +1054,29 @@ int main(int argc, char **argv)
         struct est_out eo;
         int32_t g[3], acc[3];
         double qo[4];
-        uint32_t gap = 0;
-        unsigned sat_axes, sat_est, k;
+        uint64_t gap = 0, k;
+        unsigned sat_axes, sat_est;
         bool done = false;
         quantise_row(o.part, v, t.have_temp, o.gyro_fs, o.acc_fs, &s, &sat_axes);
         if (dt > o.gap_factor * nominal) {
-            gap = (uint32_t)fmin(floor(dt / nominal + 0.5) - 1.0, 4e9);
+            /* times are at most IMU_CSV_TIME_MAX_S and nominal >= 0.1 ms: the count is exact in
+             * double and far below 2^63; clipped anyway, never wrapped */
+            const double g_samples = floor(dt / nominal + 0.5) - 1.0;
+            gap = g_samples >= 9007199254740992.0 ? 9007199254740992u : (uint64_t)g_samples;
             if (gap == 0u) gap = 1u;
+            if (o.estimator == EST_ATT && gap > ATT_GAP_MAX) {
+                fprintf(stderr,
+                        "imu_replay: line %ld: a gap of %llu samples (%.6g s) is longer than the "
+                        "%u the att estimator steps over; split the recording\n",
+                        t.line[i], (unsigned long long)gap, dt, ATT_GAP_MAX);
+                status = 1;
+                break;
+            }
             cnt.gaps++;
             cnt.missed += gap;
         }
-        s.missed = gap;
+        /* the sample's field is 32-bit: saturated (the application saturates its sum too) */
+        s.missed = gap > UINT32_MAX ? UINT32_MAX : (uint32_t)gap;
         s.t_ns = (uint64_t)(v[C_T] * 1e9 + 0.5);
         err = app_step(&app, &s, INC_OK, &c, &done, &res);
         if (err != INC_OK) {
@@ -1060,6 +1090,7 @@ int main(int argc, char **argv)
         sat_est = frame_sat(&o.frame, sat_axes);
         /* A gap: the estimator steps over the missed samples with this one (the real interval);
          * att runs at a fixed rate, so it takes the sample once per period. */
+        memset(&eo, 0, sizeof eo);
         for (k = 0; k <= (o.estimator == EST_ATT ? gap : 0u); k++) {
             err = est_step(&est, g, acc, sat_est, aiding, v[C_SPEED], v[C_YAW],
                            (uint32_t)fmin(fmax(dt * 1e9 + 0.5, 1.0), 4294967295.0), &eo, limit_deg);
@@ -1086,12 +1117,13 @@ int main(int argc, char **argv)
          * frame). frame.q maps sensor vectors into the estimator frame. */
         qmul(eo.q, o.frame.q, qo);
         fprintf(out,
-                "%.9f,%.9f,%.9f,%.9f,%.9f,%.6f,%.6f,%.6f,%d,%d,%u,%u,%ld,%.9f,%u,%.7f,%.7f,%.7f,"
+                "%.9f,%.9f,%.9f,%.9f,%.9f,%.6f,%.6f,%.6f,%d,%d,%u,%u,%ld,%.9f,%llu,%.7f,%.7f,%.7f,"
                 "%.6f,%.6f,%.6f,%.5f,%zu",
                 v[C_T], qo[0], qo[1], qo[2], qo[3], eo.roll, eo.pitch, eo.bound, eo.valid ? 1 : 0,
-                eo.rest ? 1 : 0, eo.fault, sat_axes, t.line[i], dt, gap, c.accel_g[0] / 65536.0,
-                c.accel_g[1] / 65536.0, c.accel_g[2] / 65536.0, c.gyro_dps[0] / 65536.0,
-                c.gyro_dps[1] / 65536.0, c.gyro_dps[2] / 65536.0, c.temp_c / 65536.0, cnt.blocks);
+                eo.rest ? 1 : 0, eo.fault, sat_axes, t.line[i], dt, (unsigned long long)gap,
+                c.accel_g[0] / 65536.0, c.accel_g[1] / 65536.0, c.accel_g[2] / 65536.0,
+                c.gyro_dps[0] / 65536.0, c.gyro_dps[1] / 65536.0, c.gyro_dps[2] / 65536.0,
+                c.temp_c / 65536.0, cnt.blocks);
         if (have_est) {
             fprintf(out, ",%.6f,%.6f,%.6f,%.6f,%u,%u,%d\n", last.slope.slope_deg / 65536.0,
                     last.slope.grade_pct / 65536.0, last.slope.bound_deg / 65536.0,
@@ -1102,32 +1134,29 @@ int main(int argc, char **argv)
         }
     }
     if (status == 0) status = check_write(out, o.out != NULL ? o.out : "standard output");
-    if (out != stdout) {
-        if (fclose(out) != 0 && status == 0) {
-            fprintf(stderr, "imu_replay: write error on %s\n", o.out);
-            status = 2;
-        }
-    } else if (fflush(out) != 0 && status == 0) {
-        fprintf(stderr, "imu_replay: write error on standard output\n");
+    if (status != 0) {
+        cli_out_discard(&out_file);
+    } else if (cli_out_close(&out_file) != INC_OK) {
         status = 2;
     }
-    fprintf(stderr, "imu_replay: %zu estimates, %zu gaps (%zu samples missed)", cnt.blocks,
-            cnt.gaps, cnt.missed);
+    fprintf(stderr, "imu_replay: %zu estimates, %zu gaps (%llu samples missed)", cnt.blocks,
+            cnt.gaps, (unsigned long long)cnt.missed);
     if (have_est) {
         fprintf(stderr, "; last: slope %.4f deg (%.3f %%) +- %.4f deg, %s",
                 last.slope.slope_deg / 65536.0, last.slope.grade_pct / 65536.0,
                 last.slope.bound_deg / 65536.0, last.valid ? "valid" : "NOT valid");
     }
     fprintf(stderr, "\n");
-    fprintf(
-        stderr,
-        "summary: rows=%zu estimator=%s part=%s gyro_sat_rows=%zu acc_sat_rows=%zu "
-        "att_fault_rows=%zu valid_rows=%zu valid_frac=%.5f blocks=%zu gaps=%zu missed=%zu "
-        "last_slope_deg=%.4f last_slope_valid=%d status=%d\n",
-        cnt.rows, o.estimator == EST_ATT ? "att" : (o.estimator == EST_ADAPT ? "adapt" : "tilt"),
-        o.part->name, cnt.gyro_sat, cnt.acc_sat, cnt.rejected, cnt.valid,
-        cnt.rows ? (double)cnt.valid / (double)cnt.rows : 0.0, cnt.blocks, cnt.gaps, cnt.missed,
-        have_est ? last.slope.slope_deg / 65536.0 : 0.0, have_est && last.valid ? 1 : 0, status);
+    fprintf(stderr,
+            "summary: rows=%zu estimator=%s part=%s gyro_sat_rows=%zu acc_sat_rows=%zu "
+            "att_fault_rows=%zu valid_rows=%zu valid_frac=%.5f blocks=%zu gaps=%zu missed=%llu "
+            "last_slope_deg=%.4f last_slope_valid=%d status=%d\n",
+            cnt.rows,
+            o.estimator == EST_ATT ? "att" : (o.estimator == EST_ADAPT ? "adapt" : "tilt"),
+            o.part->name, cnt.gyro_sat, cnt.acc_sat, cnt.rejected, cnt.valid,
+            cnt.rows ? (double)cnt.valid / (double)cnt.rows : 0.0, cnt.blocks, cnt.gaps,
+            (unsigned long long)cnt.missed, have_est ? last.slope.slope_deg / 65536.0 : 0.0,
+            have_est && last.valid ? 1 : 0, status);
     rows_free(&t);
     return status;
 }

@@ -13,6 +13,7 @@
 #include "inclino/sim/loopback.h"
 #include "inclino/sim/vcd.h"
 #include "inclino/spi.h"
+#include "inclino/tool_cli.h"
 #include "inclino/tool_summary.h"
 
 #include <stdio.h>
@@ -28,15 +29,41 @@ static int usage(void)
     return tool_summary_error("usage", 2);
 }
 
-static int parse_ul(const char *s, unsigned long max, int base, unsigned long *out)
+/* A decimal option through tools/lib/cli (the whole field, min..max; the message names it). */
+static int parse_ul(const char *opt, const char *s, unsigned long min, unsigned long max,
+                    unsigned long *out)
 {
-    char *end;
-    unsigned long v;
-    if (s == NULL || *s == '\0') {
+    uint64_t v;
+    if (s == NULL) {
+        cli_error("%s needs a value", opt);
         return -1;
     }
-    v = strtoul(s, &end, base);
-    if (*end != '\0' || v > max) {
+    if (cli_parse_u64(opt, s, min, max, &v) != INC_OK) return -1;
+    *out = (unsigned long)v;
+    return 0;
+}
+
+/* A word: 1..4 (16-bit) or 1..2 (8-bit) hex digits and nothing else (no "0x", no sign, no
+ * blanks; strtoul took all of those). */
+static int parse_word(const char *s, unsigned long bits, unsigned long *out)
+{
+    const size_t max_digits = bits == 16 ? 4u : 2u;
+    unsigned long v = 0;
+    size_t k, n = strlen(s);
+    int ok = n >= 1u && n <= max_digits;
+    for (k = 0; ok && k < n; k++) {
+        const char c = s[k];
+        if (c >= '0' && c <= '9')
+            v = v * 16u + (unsigned)(c - '0');
+        else if (c >= 'a' && c <= 'f')
+            v = v * 16u + (unsigned)(c - 'a' + 10);
+        else if (c >= 'A' && c <= 'F')
+            v = v * 16u + (unsigned)(c - 'A' + 10);
+        else
+            ok = 0;
+    }
+    if (!ok) {
+        cli_error("word '%s' is not 1..%zu hex digits (a %lu-bit frame)", s, max_digits, bits);
         return -1;
     }
     *out = v;
@@ -52,6 +79,8 @@ int main(int argc, char **argv)
     struct spi_dev dev;
     struct spi_dev_cfg dc;
     uint16_t tx[MAX_WORDS], rx[MAX_WORDS];
+    const char *words[MAX_WORDS];
+    static struct cli_out vcd_out;
     size_t n = 0, i;
     const char *vcd_path = NULL;
     unsigned long mode = 3, bits = 16, hz = 2000000, stall = 9000, v;
@@ -59,6 +88,7 @@ int main(int argc, char **argv)
     uint64_t t0, t1;
     int a, err, bad = 0;
     tool_summary_begin("spi_demo");
+    cli_set_program("spi_demo");
 
     for (a = 1; a < argc; a++) {
         const char *arg = argv[a];
@@ -67,27 +97,37 @@ int main(int argc, char **argv)
             vcd_path = val;
             a++;
         } else if (strcmp(arg, "--mode") == 0) {
-            if (parse_ul(val, 3, 10, &mode) != 0) return usage();
+            if (parse_ul(arg, val, 0, 3, &mode) != 0) return usage();
             a++;
         } else if (strcmp(arg, "--bits") == 0) {
-            if (parse_ul(val, 16, 10, &bits) != 0 || (bits != 8 && bits != 16)) return usage();
+            if (parse_ul(arg, val, 8, 16, &bits) != 0) return usage();
+            if (bits != 8 && bits != 16) {
+                cli_error("--bits: '%s' is out of range (accepted: 8 or 16)", val);
+                return usage();
+            }
             a++;
         } else if (strcmp(arg, "--sclk-hz") == 0) {
-            if (parse_ul(val, 500000000ul, 10, &hz) != 0 || hz == 0) return usage();
+            if (parse_ul(arg, val, 1, 500000000ul, &hz) != 0) return usage();
             a++;
         } else if (strcmp(arg, "--stall-ns") == 0) {
-            if (parse_ul(val, 100000000ul, 10, &stall) != 0) return usage();
+            if (parse_ul(arg, val, 0, 100000000ul, &stall) != 0) return usage();
             a++;
         } else if (strcmp(arg, "--hold") == 0) {
             cs = SPI_CS_HOLD;
         } else if (arg[0] == '-') {
+            cli_error("unknown option %s", arg);
             return usage();
         } else {
-            if (n == MAX_WORDS || parse_ul(arg, bits == 16 ? 0xFFFFul : 0xFFul, 16, &v) != 0) {
+            if (n == MAX_WORDS) {
+                cli_error("more than %d words", MAX_WORDS);
                 return usage();
             }
-            tx[n++] = (uint16_t)v;
+            words[n++] = arg;
         }
+    }
+    for (i = 0; i < n; i++) { /* after the loop: --bits may come after the words */
+        if (parse_word(words[i], bits, &v) != 0) return usage();
+        tx[i] = (uint16_t)v;
     }
     if (n == 0) {
         static const uint16_t def[] = {0x3E00, 0x5600, 0x0000, 0x1234, 0xBEEF};
@@ -135,18 +175,29 @@ int main(int argc, char **argv)
         fprintf(stderr, "setup failed: %s\n", inc_err_name(err));
         return tool_summary_error(inc_err_name(err), 1);
     }
-    if (vcd_path != NULL && sim_vcd_open(&vcd, vcd_path, &board.bus, SIM_BOARD_SPI_MASK) != 0) {
-        fprintf(stderr, "cannot write %s\n", vcd_path);
-        return tool_summary_error(inc_err_name(INC_ERR_IO), 1);
+    if (vcd_path != NULL) { /* the safe writer: never a FIFO, symlink or device (tools/lib/cli) */
+        if (cli_out_open(&vcd_out, "--vcd", vcd_path, NULL, 0) != INC_OK) {
+            return tool_summary_error(inc_err_name(INC_ERR_IO), 1);
+        }
+        if (sim_vcd_start(&vcd, vcd_out.f, &board.bus, SIM_BOARD_SPI_MASK) != 0) {
+            cli_out_discard(&vcd_out);
+            fprintf(stderr, "cannot record %s\n", vcd_path);
+            return tool_summary_error(inc_err_name(INC_ERR_IO), 1);
+        }
     }
     hal_delay_ns(&board.hal, 1000); /* a quiet start in the waveform */
     t0 = hal_now_ns(&board.hal);
     err = spi_transfer(&dev, tx, rx, n, cs);
     t1 = hal_now_ns(&board.hal);
     hal_delay_ns(&board.hal, 1000);
-    if (vcd_path != NULL && sim_vcd_close(&vcd) != 0) {
-        fprintf(stderr, "error writing %s\n", vcd_path);
-        bad = 1;
+    if (vcd_path != NULL) {
+        if (sim_vcd_stop(&vcd) != 0) {
+            cli_error("write error on '%s'", vcd_path);
+            cli_out_discard(&vcd_out);
+            return tool_summary_error(inc_err_name(INC_ERR_IO), 1);
+        }
+        if (cli_out_close(&vcd_out) != INC_OK)
+            return tool_summary_error(inc_err_name(INC_ERR_IO), 1);
     }
     if (err != 0) {
         fprintf(stderr, "transfer failed: %s\n", inc_err_name(err));

@@ -18,6 +18,7 @@
 
 #include "inclino/error.h"
 #include "inclino/sim/vehicle.h"
+#include "inclino/tool_cli.h"
 
 static void usage(void)
 {
@@ -34,28 +35,18 @@ static void usage(void)
         "  --ideal           no sensor errors: every output is the truth\n");
 }
 
-/* A whole-field finite decimal number (no leading blanks, nothing after it). */
+/* A whole-field finite decimal number (tools/lib/cli: no blanks, no '+', no hex, nothing
+ * after it), any range: the callers check theirs. */
 static int parse_double(const char *s, double *v)
 {
-    char *end;
-    if (s == NULL || *s == '\0' || isspace((unsigned char)*s)) return -1;
-    errno = 0;
-    *v = strtod(s, &end);
-    if (end == s || *end != '\0' || errno == ERANGE || !isfinite(*v)) return -1;
-    return 0;
+    return cli_parse_double("value", s, -1e300, 1e300, 0, v) == INC_OK ? 0 : -1;
 }
 
 static int parse_u64(const char *s, unsigned long long *v)
 {
-    const char *p;
-    char *end;
-    if (s == NULL || *s == '\0') return -1;
-    for (p = s; *p != '\0'; p++) {
-        if (!isdigit((unsigned char)*p)) return -1;
-    }
-    errno = 0;
-    *v = strtoull(s, &end, 10);
-    if (*end != '\0' || errno == ERANGE) return -1;
+    uint64_t x = 0;
+    if (cli_parse_u64("--seed", s, 0, UINT64_MAX, &x) != INC_OK) return -1;
+    *v = x;
     return 0;
 }
 
@@ -158,6 +149,7 @@ static const char HEADER[] = "t_s,gyr_x_dps,gyr_y_dps,gyr_z_dps,acc_x_g,acc_y_g,
 int main(int argc, char **argv)
 {
     static struct veh_scenario sc;
+    static struct cli_out out;
     static struct veh_sim sim;
     struct veh_config cfg;
     struct veh_sample o;
@@ -165,7 +157,11 @@ int main(int argc, char **argv)
     FILE *f = NULL;
     unsigned long long n = 0;
     double max_lat = 0.0, max_lon = 0.0, max_roll = 0.0, max_pitch = 0.0, last_t = 0.0;
-    int rc = parse(argc, argv, &a), werr = 0;
+    int rc, werr = 0;
+    cli_set_program("vehicle_sim");
+    cli_set_quiet(1); /* parse's own messages name the option and the range */
+    rc = parse(argc, argv, &a);
+    cli_set_quiet(0);
     if (rc != 0) {
         usage();
         return rc > 0 ? 0 : 1;
@@ -199,11 +195,10 @@ int main(int argc, char **argv)
         return 1;
     }
     if (a.out != NULL) {
-        f = fopen(a.out, "w");
-        if (f == NULL) {
-            fprintf(stderr, "vehicle_sim: cannot open %s: %s\n", a.out, strerror(errno));
-            return 2;
-        }
+        /* the safe writer (tools/lib/cli): a temporary file renamed when every write succeeded;
+         * never a FIFO, a symlink or a device */
+        if (cli_out_open(&out, "--out", a.out, NULL, 0) != INC_OK) return 2;
+        f = out.f;
         if (fputs(HEADER, f) < 0) werr = 1;
     }
     while (!werr && veh_sim_next(&sim, &o)) {
@@ -223,8 +218,11 @@ int main(int argc, char **argv)
         }
     }
     if (f != NULL) {
-        if (fflush(f) != 0 || ferror(f)) werr = 1;
-        if (fclose(f) != 0) werr = 1;
+        if (werr) {
+            cli_out_discard(&out);
+        } else if (cli_out_close(&out) != INC_OK) {
+            return 2;
+        }
     }
     if (werr) {
         fprintf(stderr, "vehicle_sim: write error on %s\n", a.out);

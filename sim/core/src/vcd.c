@@ -33,12 +33,12 @@ static void on_change(void *arg, unsigned pin, bool level, uint64_t t)
     v->changes++;
 }
 
-int sim_vcd_open(struct sim_vcd *v, const char *path, struct sim_pinbus *bus, uint32_t pin_mask)
+int sim_vcd_start(struct sim_vcd *v, FILE *f, struct sim_pinbus *bus, uint32_t pin_mask)
 {
     unsigned i;
     uint32_t mask = 0;
     uint64_t t0;
-    if (v == NULL || path == NULL || bus == NULL) {
+    if (v == NULL || f == NULL || bus == NULL) {
         return INC_ERR_NULL;
     }
     memset(v, 0, sizeof(*v));
@@ -50,10 +50,7 @@ int sim_vcd_open(struct sim_vcd *v, const char *path, struct sim_pinbus *bus, ui
     if (mask == 0) {
         return INC_ERR_INVAL;
     }
-    v->f = fopen(path, "w");
-    if (v->f == NULL) {
-        return INC_ERR_IO;
-    }
+    v->f = f;
     v->bus = bus;
     v->mask = mask;
     t0 = bus->clk != NULL ? bus->clk->now_ns : 0;
@@ -82,7 +79,29 @@ int sim_vcd_open(struct sim_vcd *v, const char *path, struct sim_pinbus *bus, ui
     return sim_pinbus_listen(bus, &v->listener);
 }
 
-int sim_vcd_close(struct sim_vcd *v)
+int sim_vcd_open(struct sim_vcd *v, const char *path, struct sim_pinbus *bus, uint32_t pin_mask)
+{
+    FILE *f;
+    int err;
+    if (v == NULL || path == NULL || bus == NULL) {
+        return INC_ERR_NULL;
+    }
+    f = fopen(path, "w");
+    if (f == NULL) {
+        memset(v, 0, sizeof(*v));
+        return INC_ERR_IO;
+    }
+    err = sim_vcd_start(v, f, bus, pin_mask);
+    if (err != INC_OK) {
+        (void)fclose(f);
+        v->f = NULL;
+        return err;
+    }
+    v->owns_file = true;
+    return INC_OK;
+}
+
+int sim_vcd_stop(struct sim_vcd *v)
 {
     int err = INC_OK;
     if (v == NULL) {
@@ -96,9 +115,17 @@ int sim_vcd_close(struct sim_vcd *v)
     if (v->bus->clk != NULL) {
         put_time(v, v->bus->clk->now_ns + 1000u);
     }
-    if (fclose(v->f) != 0 || v->io_error) {
+    if (fflush(v->f) != 0 || ferror(v->f) || v->io_error) {
+        err = INC_ERR_IO;
+    }
+    if (v->owns_file && fclose(v->f) != 0) {
         err = INC_ERR_IO;
     }
     v->f = NULL;
     return err;
+}
+
+int sim_vcd_close(struct sim_vcd *v)
+{
+    return sim_vcd_stop(v);
 }

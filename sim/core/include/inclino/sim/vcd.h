@@ -29,6 +29,7 @@ struct sim_vcd {
     uint64_t last_t;
     bool time_written;
     bool io_error;
+    bool owns_file; /* opened by sim_vcd_open: closed by sim_vcd_close */
     uint64_t changes;
 };
 
@@ -38,8 +39,18 @@ struct sim_vcd {
  */
 int sim_vcd_open(struct sim_vcd *v, const char *path, struct sim_pinbus *bus, uint32_t pin_mask);
 
-/* Stop recording, write the final time stamp and close. Returns 0 or INC_ERR_IO. */
+/* Stop recording, write the final time stamp and close. Returns 0 or INC_ERR_IO (any write, the
+ * flush or the close failed). */
 int sim_vcd_close(struct sim_vcd *v);
+
+/*
+ * The same into a stream the caller owns (a tools/lib/cli safe output): sim_vcd_start writes the
+ * header and records; sim_vcd_stop writes the final time stamp and flushes, but does not close
+ * the stream. sim_vcd_stop returns 0 or INC_ERR_IO (any write or the flush failed); it is
+ * sim_vcd_close for a recording opened with sim_vcd_open.
+ */
+int sim_vcd_start(struct sim_vcd *v, FILE *f, struct sim_pinbus *bus, uint32_t pin_mask);
+int sim_vcd_stop(struct sim_vcd *v);
 
 #ifdef __cplusplus
 }

@@ -154,6 +154,8 @@ struct calstore *epb_rig_store(struct epb_rig *r);
 struct sim_pinbus *epb_rig_pinbus(struct epb_rig *r);
 /* Start a VCD of the SPI pins and the part's data-ready line (sim_vcd_open). */
 int epb_rig_vcd_open(struct epb_rig *r, struct sim_vcd *v, const char *path);
+/* The same into a stream the caller owns (sim_vcd_start; end it with sim_vcd_stop). */
+int epb_rig_vcd_start(struct epb_rig *r, struct sim_vcd *v, FILE *f);
 /* Print the violation log (when there is any violation). */
 void epb_rig_print_violations(const struct epb_rig *r, FILE *out);
 /* Bumps begun since epb_rig_park. */
