@@ -95,7 +95,7 @@ cmake_path(NORMAL_PATH INCLINO_ROOT)
 #  -fno-tree-loop-distribute-patterns: stops gcc turning loops into memcpy/memset calls.
 #  -Wdouble-promotion -Wfloat-equal: a float that slips in is at least loud; the cross checks
 #  (tests/build) prove no soft-float helper is linked.
-set(INCLINO_FREESTANDING_OPTIONS -ffreestanding -fno-tree-loop-distribute-patterns
+set(INCLINO_FREESTANDING_OPTIONS -ffreestanding $<$<C_COMPILER_ID:GNU>:-fno-tree-loop-distribute-patterns>
   -Wdouble-promotion -Wfloat-equal -Wcast-align -Wpointer-arith)
 # On Arm, -mgeneral-regs-only keeps gcc from using the FPU's registers at all: with the M4F's
 # hard-float ABI it otherwise moves 64-bit data (int64 covariances, struct copies) through
@@ -206,6 +206,10 @@ function(inclino_add_host_tool)
 endfunction()
 
 include(inclino_layers)
+
+# libFuzzer targets (INCLINO_FUZZ, the `fuzz` preset) and their corpus replays in the other host
+# builds: inclino_add_fuzzer(); docs/fuzzing.md.
+include(inclino_fuzz)
 
 # Cross-target helpers (board support, images, size report) live in their own file.
 include(inclino_cross)

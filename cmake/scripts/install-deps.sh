@@ -8,6 +8,10 @@
 # BROAD test data:      python3-numpy python3-scipy (tools/broad/broad2csv.py), curl ca-certificates
 #                       (tools/broad/fetch-broad.sh downloads over HTTPS; docs/data.md)
 # Plots:                gnuplot-nox (tools/plots/att_error_bound.sh; docs/attitude.md)
+# Fuzzing:              clang-14 libclang-rt-14-dev (the `fuzz` preset: clang -fsanitize=fuzzer,
+#                       address,undefined needs libclang-rt-14-dev's runtimes, only a Recommends
+#                       of clang-14, so not pulled in with --no-install-recommends), llvm-14
+#                       (llvm-symbolizer: readable sanitizer stack traces; docs/fuzzing.md)
 #
 # --no-install-recommends keeps QEMU from pulling in its GUI and firmware packages.
 # Uses sudo only when not already root.
@@ -17,7 +21,8 @@ packages="cmake make gcc g++ python3 libeigen3-dev \
     gcc-arm-none-eabi libnewlib-arm-none-eabi gcc-riscv64-unknown-elf \
     qemu-system-arm qemu-system-misc zlib1g-dev \
     cppcheck clang-format valgrind sigrok-cli \
-    python3-numpy python3-scipy curl ca-certificates gnuplot-nox"
+    python3-numpy python3-scipy curl ca-certificates gnuplot-nox \
+    clang-14 libclang-rt-14-dev llvm-14"
 
 if [ "$(id -u)" -eq 0 ]; then
     sudo=""

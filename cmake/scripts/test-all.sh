@@ -1,5 +1,5 @@
 #!/bin/sh
-# test-all.sh - run every test of Inclino: the six workflow presets (configure from scratch,
+# test-all.sh - run every test of Inclino: the seven workflow presets (configure from scratch,
 # build, test), stopping at the first failure.
 #
 #   host           gcc, every test (unit, sim, drivers, tools) + cppcheck
@@ -9,14 +9,16 @@
 #   cortex-m4f     (mps2-an386)
 #   rv32imac       every module compiled and linked, images, checks; board tests under
 #                  qemu-system-riscv32
+#   fuzz           clang-14 libFuzzer targets of every parser, a bounded run each (-runs,
+#                  ASan + UBSan; docs/fuzzing.md)
 #
-# Usage: cmake/scripts/test-all.sh [preset...]   (default: all six, in that order)
+# Usage: cmake/scripts/test-all.sh [preset...]   (default: all seven, in that order)
 # Build directories: build/<preset> in the source tree (CMakePresets.json).
 set -eu
 
 cd "$(dirname "$0")/../.."
 
-presets="${*:-host host-sanitize cortex-m0plus cortex-m3 cortex-m4f rv32imac}"
+presets="${*:-host host-sanitize cortex-m0plus cortex-m3 cortex-m4f rv32imac fuzz}"
 start=$(date +%s)
 for preset in $presets; do
     t0=$(date +%s)

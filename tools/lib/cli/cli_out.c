@@ -55,7 +55,7 @@ int cli_out_open(struct cli_out *o, const char *opt, const char *path, const cha
 {
     struct stat st;
     int exists = 0, rc, fd;
-    size_t i, len;
+    size_t len;
     const char *slash, *base;
     mode_t mask, mode;
     if (o == NULL) return INC_ERR_NULL;
@@ -79,6 +79,7 @@ int cli_out_open(struct cli_out *o, const char *opt, const char *path, const cha
     rc = check_target(opt, path, &st, &exists);
     if (rc != INC_OK) return rc;
     if (exists) {
+        size_t i;
         for (i = 0; i < n_inputs; i++) {
             struct stat in;
             if (inputs == NULL || inputs[i] == NULL || strcmp(inputs[i], "-") == 0) continue;
