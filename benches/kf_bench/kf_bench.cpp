@@ -285,7 +285,7 @@ int parse_options(int argc, char **argv, const std::string &allowed, Options *o)
         const std::string name(argv[i]);
         if (name.rfind("--", 0) != 0 || allowed.find(name + " ") == std::string::npos) {
             cli_error("%s: unknown option for '%s' (options: %s)", argv[i], argv[1],
-                      allowed.c_str());
+                      allowed.substr(0, allowed.size() - 1).c_str());
             return INC_ERR_INVAL;
         }
         const char *v = cli_value(argc, argv, &i);
