@@ -96,10 +96,9 @@ int do_table1(const campaign::Config &c, const std::string &csv)
         if (ok) {
             ok = std::fprintf(f, "term,article_before_mg,article_after_mg,sim_before_mg,"
                                  "sim_after_mg,ours_before_mg,ours_after_mg\n") > 0;
-            int i = 0;
             for (const auto &r : t.rows) {
                 ok = ok &&
-                     std::fprintf(f, "%d,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f\n", ++i,
+                     std::fprintf(f, "\"%s\",%.4f,%.4f,%.4f,%.4f,%.4f,%.4f\n", r.term.c_str(),
                                   r.article_before * 1e3, r.article_after * 1e3, r.sim_before * 1e3,
                                   r.sim_after * 1e3, r.ours_before * 1e3, r.ours_after * 1e3) > 0;
             }
