@@ -17,6 +17,7 @@ extern "C" {
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <iterator>
 
 namespace campaign
 {
@@ -556,8 +557,7 @@ void draw_scenario(uint64_t seed, double length_s, Scenario &s)
     s.engine = sim_rng_uniform(&r) < 0.8;
     s.engine_scale = uni(r, 0.5, 1.5);
     for (auto &o : s.phase)
-        for (double &ph : o)
-            ph = uni(r, 0.0, 2.0 * kPi);
+        std::generate(std::begin(o), std::end(o), [&r] { return uni(r, 0.0, 2.0 * kPi); });
     if (sim_rng_uniform(&r) < 0.5) {
         s.wind_deg = uni(r, 0.0, 0.03);
         s.wind_hz = uni(r, 0.3, 2.0);
@@ -876,8 +876,7 @@ std::string table1(const Config &c, Table1 &t)
         row.article_after = 0.0;
         Part p;
         part_ideal(p);
-        for (double &g : p.gain)
-            g = 1.0 + kSensitivity;
+        std::fill(std::begin(p.gain), std::end(p.gain), 1.0 + kSensitivity);
         row.sim_before = x_of(residual(p, nullptr, at1g));
         if (!(err = record_of(p, art, cfg, rec)).empty()) return err;
         row.sim_after = x_of(residual(p, &rec, at1g));
@@ -896,8 +895,7 @@ std::string table1(const Config &c, Table1 &t)
         row.article_after = 0.0;
         Part p;
         part_ideal(p);
-        for (double &o : p.off)
-            o = kInitialOffset;
+        std::fill(std::begin(p.off), std::end(p.off), kInitialOffset);
         row.sim_before = x_of(residual(p, nullptr, level));
         if (!(err = record_of(p, art, cfg, rec)).empty()) return err;
         row.sim_after = x_of(residual(p, &rec, level));
@@ -915,8 +913,8 @@ std::string table1(const Config &c, Table1 &t)
         row.article_after = 0.010;
         Part p;
         part_ideal(p);
-        for (double &n : p.nl2)
-            n = kNonlinearity / (kNonlinRange * kNonlinRange);
+        std::fill(std::begin(p.nl2), std::end(p.nl2),
+                  kNonlinearity / (kNonlinRange * kNonlinRange));
         // [ADI-EPB]'s measure: max |A_MEA - A_FIT| within +-500 mg, A_FIT the line through the
         // range's end points, measured on the tilt table (the part's own property: no
         // calibration changes it in the article's procedure).
@@ -967,8 +965,7 @@ std::string table1(const Config &c, Table1 &t)
         // The article: the other 20 % is not removed by the three points: an offset change
         // that does not follow the temperature (stress, ageing), after the end of line.
         if (!(err = record_of(p, art, cfg, rec)).empty()) return err;
-        for (double &s : p.shift)
-            s = (1.0 - kQuadShare) * kOffsetDrift;
+        std::fill(std::begin(p.shift), std::end(p.shift), (1.0 - kQuadShare) * kOffsetDrift);
         row.sim_before = x_of(residual(p, nullptr, slope_t));
         row.sim_after = x_of(residual(p, &rec, slope_t));
         // Ours: the campaign's population shape, 40 mg parabola + 10 mg cubic over temperature.
