@@ -192,24 +192,49 @@ int slope_estimate(const struct slope_cfg *cfg, const struct slope_input *in,
             flags |= SLOPE_F_MAGNITUDE;
         }
     } else {
-        const int32_t g = axis_value(in, cfg->gravity_axis, cfg->gravity_axis_negative);
-        const int32_t eg = accel_bound(&cfg->budget, g, noise);
-        const uint64_t mag2 = (uint64_t)((int64_t)s * s) + (uint64_t)((int64_t)g * g); /* Q32 */
-        const int64_t mag = fx_isqrt64_round(mag2);                                    /* Q16 */
+        /* The gravity component perpendicular to the slope axis is the norm of the gravity
+         * axis and the cross axis: with a cross slope (roll) phi, A_g alone is cos(theta)
+         * cos(phi), and atan2(A_s, A_g) would overstate the slope (by 0.4 deg at 30 deg of
+         * slope and 10 deg of roll). Its sign is the gravity axis's (upright: positive). */
+        const uint8_t ca = (uint8_t)(3u - cfg->slope_axis - cfg->gravity_axis);
+        const int32_t gz = axis_value(in, cfg->gravity_axis, cfg->gravity_axis_negative);
+        const int32_t gc = in->accel_g[ca];
+        const int32_t eg = accel_bound(&cfg->budget, gz, noise);
+        const int32_t ec = accel_bound(&cfg->budget, gc, noise);
+        const uint64_t az = fx_uabs32(gz), ac = fx_uabs32(gc);
+        const uint64_t h2 = az * az + ac * ac; /* Q32, < 2^63 */
+        int64_t g = fx_isqrt64_round(h2);      /* Q16 */
+        /* The norm over the box (|gz| +- eg, |gc| +- ec) lies in [h_lo, h_hi] (it grows with
+         * each magnitude): h_lo rounded down, h_hi up. */
+        const uint64_t zl = az > (uint64_t)eg ? az - (uint64_t)eg : 0u;
+        const uint64_t cl = ac > (uint64_t)ec ? ac - (uint64_t)ec : 0u;
+        const uint64_t zh = az + (uint64_t)eg, ch = ac + (uint64_t)ec;
+        const uint64_t hl2 = zl * zl + cl * cl, hh2 = zh * zh + ch * ch;
+        int64_t h_lo = (int64_t)fx_isqrt64(hl2), h_hi = (int64_t)fx_isqrt64(hh2);
+        const uint64_t mag2 = (uint64_t)((int64_t)s * s) + h2; /* Q32 */
+        const int64_t mag = fx_isqrt64_round(mag2);            /* Q16 */
         unsigned c;
-        theta = fx_atan2_deg(s, g);
+        if ((uint64_t)h_hi * (uint64_t)h_hi < hh2) {
+            h_hi++;
+        }
+        if (gz < 0) { /* upside down: flagged below; the estimate keeps the quadrant */
+            g = -g;
+            h_lo = -h_lo;
+            h_hi = -h_hi;
+        }
+        theta = fx_atan2_deg(s, fx_sat32(g));
         /* Over a box that does not contain the origin, atan2 takes its extremes at the
          * corners; a box that contains it (no gravity left) is flagged by the magnitude test. */
         for (c = 0; c < 4u; c++) {
             const int32_t cs = fx_sat32((int64_t)s + ((c & 1u) ? ea : -ea));
-            const int32_t cg = fx_sat32((int64_t)g + ((c & 2u) ? eg : -eg));
+            const int32_t cg = fx_sat32((c & 2u) ? h_hi : h_lo);
             const int32_t d = absdiff(fx_atan2_deg(cs, cg), theta);
             if (d > bound) {
                 bound = d;
             }
         }
         if (mag > (int64_t)FX_Q16_ONE + cfg->magnitude_tol_g ||
-            mag < (int64_t)FX_Q16_ONE - cfg->magnitude_tol_g || g <= ea + eg) {
+            mag < (int64_t)FX_Q16_ONE - cfg->magnitude_tol_g || gz <= eg || h_lo <= ea) {
             flags |= SLOPE_F_MAGNITUDE;
         }
     }

@@ -6,7 +6,10 @@
  * stillness modules produce it), the number of samples averaged, and the error budget of the
  * calibrated part. The estimate is
  *   single axis:  theta = asin(A_s)                 (A_s: the axis along the slope, in g)
- *   two axes:     theta = atan2(A_s, A_g)           (A_g: the axis along gravity when level)
+ *   two axes:     theta = atan2(A_s, sign(A_g) * sqrt(A_g^2 + A_c^2))
+ *                 (A_g: the axis along gravity when level, A_c the third (cross) axis: with a
+ *                 cross slope the gravity left perpendicular to the slope axis is shared by both;
+ *                 the bound takes A_g and A_c each +- their e_a)
  * and the bound follows [ADI-EPB]'s error budget, summed worst case (as its Table 1 does):
  *   e_a = |A| * sensitivity + offset + nonlinearity + temperature + k * sigma / sqrt(N)
  * where k is the noise factor ("6 sigma" in [ADI-EPB]; slope_sigma_factor() derives it from the
@@ -32,7 +35,8 @@ extern "C" {
 
 enum slope_method {
     SLOPE_SINGLE_AXIS = 0, /* asin(A_s / 1 g) */
-    SLOPE_TWO_AXIS = 1,    /* atan2(A_s, A_g): independent of the sensitivity common to both axes */
+    SLOPE_TWO_AXIS = 1,    /* atan2(A_s, |(A_g, A_c)|): independent of the sensitivity common to
+                              the axes, and of the cross slope */
 };
 
 /* Residual errors of the calibrated part, one axis, worst case ([ADI-EPB] Table 1 "after"). */
@@ -55,7 +59,7 @@ struct slope_cfg {
     fx_q16_t max_slope_deg;   /* beyond this |theta| the estimate is flagged out of range
                                   (the budget's nonlinearity is only valid within it); 0..90 */
     fx_q16_t max_bound_deg;   /* an estimate whose bound exceeds this is not valid; > 0 */
-    fx_q16_t magnitude_tol_g; /* two-axis: |(A_s, A_g)| must be within 1 g +- this (a vehicle
+    fx_q16_t magnitude_tol_g; /* two-axis: |(A_s, A_g, A_c)| must be within 1 g +- this (a vehicle
                                   that accelerates or is jolted is not parked); single axis:
                                   |A_s| must be <= 1 g + this */
 };
