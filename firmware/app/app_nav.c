@@ -37,6 +37,8 @@ int app_nav_init(struct app_nav *a, const struct app_nav_cfg *cfg)
     a->acc_sum = 0;
     a->acc_n = 0u;
     a->acc_last = 0;
+    a->rest_gyro_sum = a->rest_acc_sum = 0;
+    a->rest_n = 0u;
     a->stats.gyro_samples = a->stats.accel_samples = a->stats.cycles = 0u;
     a->stats.nmea_sentences = a->stats.nmea_errors = a->stats.fixes = 0u;
     a->stats.fixes_refused = a->stats.offsets = 0u;
@@ -74,10 +76,20 @@ int app_nav_accel(struct app_nav *a, const fx_q16_t acc_g[3])
         (!a->nav.blend.have_fix || fx_abs(a->nav.v_q16) < APP_NAV_REST_SPEED_Q16)) {
         const struct still_window *w = still_last(&a->still);
         if (w != NULL) {
-            (void)nav_gyro_offset(&a->nav, w->gyro_mean[2]);
-            (void)nav_accel_rest(&a->nav, w->accel_mean[0]);
+            /* the mean of every window of this stop (one window's mean carries the noise of
+             * one second; a stop of n windows, 1 / sqrt(n) of it) */
+            if (a->rest_n < APP_NAV_REST_WINDOWS) {
+                a->rest_gyro_sum += w->gyro_mean[2];
+                a->rest_acc_sum += w->accel_mean[0];
+                a->rest_n++;
+            }
+            (void)nav_gyro_offset(&a->nav, fx_div64(a->rest_gyro_sum, a->rest_n));
+            (void)nav_accel_rest(&a->nav, fx_div64(a->rest_acc_sum, a->rest_n));
             a->stats.offsets++;
         }
+    } else if (done) {
+        a->rest_gyro_sum = a->rest_acc_sum = 0; /* the next stop starts its own mean */
+        a->rest_n = 0u;
     }
     return INC_OK;
 }

@@ -378,20 +378,23 @@ static void fix_speed_heading(struct nav *s, const struct nav_fix_in *f, const s
     }
     if (f->has_course && f->has_speed && v_fix >= s->cfg.course_min_mps) {
         const int64_t hc = course_to_h(f->course_cdeg);
+        /* the course comes from the velocity: its bound scales as 1 / speed */
+        const int64_t cb = v_fix > 0
+                               ? (int64_t)s->cfg.course_bound_deg * s->cfg.course_min_mps / v_fix
+                               : s->cfg.course_bound_deg;
         if (!s->have_heading) {
             s->h = hc;
             s->h_raw = 0;
-            s->b_h_ns = (int64_t)s->cfg.course_bound_deg * NS_PER_S;
+            s->b_h_ns = cb * NS_PER_S;
             s->have_heading = true;
             s->course_updates++;
         } else if (h != NULL) {
             const int64_t e = wrap_pm(hc - h->h);
-            const int64_t gate = (heading_bound(s) + s->cfg.course_bound_deg) * NS_PER_S;
+            const int64_t gate = (heading_bound(s) + cb) * NS_PER_S;
             if (abs64(e) <= gate) {
                 const int64_t g = s->cfg.gain_heading;
                 s->h = wrap_h(s->h + (e / 65536) * g);
-                s->b_h_ns = s->b_h_ns - ((s->b_h_ns / 65536) * g) +
-                            (int64_t)s->cfg.course_bound_deg * g / 65536 * NS_PER_S;
+                s->b_h_ns = s->b_h_ns - ((s->b_h_ns / 65536) * g) + cb * g / 65536 * NS_PER_S;
                 s->course_updates++;
             }
         }

@@ -94,11 +94,11 @@ static void d_straight(struct veh_scenario *sc, struct sim_gps_cfg *g)
     start(sc, "straight");
     seg(sc, 20.0, 30.0, 2.0, 0.0, 1.0, 0.0);
     seg(sc, 40.0, 30.0, 2.0, 0.0, 1.0, 0.0);
-    /* a fix that jumps: 40 m off for 2 s */
+    /* a fix that jumps: 50 m off for 2 s */
     g->jump[0].t0_s = 45.0;
     g->jump[0].duration_s = 2.0;
     g->jump[0].de_m = 30.0;
-    g->jump[0].dn_m = -28.0;
+    g->jump[0].dn_m = -40.0;
     g->n_jumps = 1u;
 }
 
@@ -217,7 +217,7 @@ static void d_outage(struct veh_scenario *sc, struct sim_gps_cfg *g)
 }
 
 static const struct drive drives[] = {
-    {"straight", "30 m/s straight, a fix that jumps 41 m for 2 s", d_straight},
+    {"straight", "30 m/s straight, a fix that jumps 50 m for 2 s", d_straight},
     {"accel_brake", "0-25 m/s at 3 m/s^2, braking to 9 and to 0 at 4 m/s^2", d_accel_brake},
     {"lane_change", "three 3.5 m lane changes at 30 m/s (3 s, 3 s, 2.5 s)", d_lane_change},
     {"turn_small_left", "4 deg left then 4 deg right back, 20 m/s", d_small_left},

@@ -19,8 +19,9 @@
  *
  * Per gyro sample: rate -> nav_gyro (offset from the gate, averaging, heading). Per accel sample:
  * the stillness gate (still) on (gyro 0, 0, z; accel x, y, z) at the accelerometer's rate; a
- * window at rest hands its mean gyro rate to nav_gyro_offset and its mean forward specific force
- * to nav_accel_rest; the forward axis is summed for the cycle's mean. Per UART chunk: the NMEA
+ * window at rest while standing (speed below APP_NAV_REST_SPEED_Q16) hands the mean gyro rate
+ * and the mean forward specific force of the stop's still windows so far to nav_gyro_offset
+ * and nav_accel_rest; the forward axis is summed for the cycle's mean. Per UART chunk: the NMEA
  * parser; an RMC with a fix becomes nav_fix, valid at its arrival time minus the receiver's
  * latency (cfg.gps_latency_ns). Per cycle: nav_step with the cycle's mean forward acceleration.
  */
@@ -44,6 +45,8 @@ extern "C" {
 
 /* Standing: below this speed (Q16 m/s, 0.3 m/s) a still window may set the gyro offset. */
 #define APP_NAV_REST_SPEED_Q16 (FX_Q16_ONE * 3 / 10)
+/* The offset is the mean of up to this many still windows of one stop. */
+#define APP_NAV_REST_WINDOWS 64u
 
 struct app_nav_cfg {
     struct nav_cfg nav;
@@ -72,6 +75,8 @@ struct app_nav {
     int64_t acc_sum;
     uint32_t acc_n;
     fx_q16_t acc_last;
+    int64_t rest_gyro_sum, rest_acc_sum; /* window means of the current stop */
+    uint32_t rest_n;
     struct app_nav_stats stats;
     bool ready;
 };
