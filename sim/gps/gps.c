@@ -94,7 +94,7 @@ int sim_gps_epoch(struct sim_gps *g, double t_s, const double pos_en[2], const d
 {
     char body[200], tm[48], lat[48], lon[48];
     size_t n = 0;
-    double dt, phi, e, nn, ve, vn, spd, crs, la, lo, tod;
+    double dt, e, nn, ve, vn, spd, crs, la, lo, tod;
     int fix, jump = 0, rc = INC_OK;
     unsigned which = 0;
     long long cs;
@@ -104,7 +104,7 @@ int sim_gps_epoch(struct sim_gps *g, double t_s, const double pos_en[2], const d
     /* Gauss-Markov step over the time since the previous epoch */
     dt = g->started ? t_s - g->t_last : 0.0;
     if (dt > 0.0) {
-        phi = exp(-dt / g->cfg.pos_tau_s);
+        const double phi = exp(-dt / g->cfg.pos_tau_s);
         g->gm[0] = phi * g->gm[0] +
                    sqrt(1.0 - phi * phi) * g->cfg.pos_sigma_m * sim_rng_gauss(&g->rng);
         g->gm[1] = phi * g->gm[1] +

@@ -296,12 +296,11 @@ static void test_stream(void)
     n += (size_t)snprintf(stream + n, sizeof stream - n, "$GPVTG,,T,,M,0.0,N,0.0,K*4E\rX\n");
     for (cut = 0; cut <= n; cut++) {
         int types[8], errs[8], nt = 0, ne = 0;
-        size_t off = 0;
         REQUIRE(nmea_init(&p) == INC_OK);
         /* two reads: [0, cut) and [cut, n), each consumed in a loop */
         for (i = 0; i < 2u; i++) {
-            size_t a = i == 0u ? 0u : cut, b = i == 0u ? cut : n;
-            off = a;
+            const size_t b = i == 0u ? cut : n;
+            size_t off = i == 0u ? 0u : cut;
             while (off < b) {
                 size_t used = 0;
                 int rc = nmea_feed(&p, stream + off, b - off, &used, &m);
@@ -346,7 +345,7 @@ static void test_overlong(void)
     struct nmea_parser p;
     struct nmea_msg m;
     size_t n = 0, off = 0, len;
-    int rc, results[4], k = 0;
+    int results[4], k = 0;
     char body[160];
     /* exactly NMEA_MAX_CHARS: accepted; one more: refused */
     memset(body, '0', sizeof body);
@@ -371,7 +370,7 @@ static void test_overlong(void)
     REQUIRE(nmea_init(&p) == INC_OK);
     while (off < n && k < 4) {
         size_t used = 0;
-        rc = nmea_feed(&p, stream + off, n - off, &used, &m);
+        const int rc = nmea_feed(&p, stream + off, n - off, &used, &m);
         off += used;
         if (rc != 0) results[k++] = rc == 1 ? 1 : (int)p.why;
     }

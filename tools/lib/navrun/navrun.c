@@ -19,10 +19,6 @@
 
 /* ---- drives --------------------------------------------------------------------------------- */
 
-struct seg_b {
-    struct veh_scenario *sc;
-};
-
 static void seg(struct veh_scenario *sc, double dur, double v, double a, double kappa, double kramp,
                 double ksine)
 {
@@ -310,6 +306,7 @@ int navrun_drive(unsigned i, const struct navrun_cfg *cfg, struct navrun_result 
     struct snap last_acc;
     double prev_pos[2] = {0, 0}, t_next_epoch = 1.0;
     double h_unwrap = 0, h_prev = 0, th_unwrap = 0, th_prev = 0;
+    /* cppcheck-suppress unreadVariable ; set on every cycle before the snapshots read them */
     double dr_e = 0, dr_n = 0, gsum = 0, asum[3] = {0, 0, 0};
     bool h_init = false;
     uint64_t k, n;
@@ -454,7 +451,7 @@ int navrun_drive(unsigned i, const struct navrun_cfg *cfg, struct navrun_result 
             }
         }
         if (k % CYCLE_DIV == CYCLE_DIV - 1u) {
-            double ne, nn, pe, hd, err;
+            double ne, nn, hd;
             (void)app_nav_cycle(&an, 13000000u, &out);
             cycle++;
             r->cycles++;
@@ -483,20 +480,20 @@ int navrun_drive(unsigned i, const struct navrun_cfg *cfg, struct navrun_result 
                 te = smp.pos_enu_m[0] - ref_e;
                 tn = smp.pos_enu_m[1] - ref_n;
                 if (out.pos_valid) {
+                    const double pe = hypot(ne - te, nn - tn);
                     r->valid_pos++;
-                    pe = hypot(ne - te, nn - tn);
                     stat_add(&r->abs_pos, pe);
                     if (pe > out.pos_bound_mm / 1000.0) r->viol_pos++;
                 }
                 if (out.speed_valid) {
+                    const double err = out.speed_mps / 65536.0 - smp.true_speed_mps;
                     r->valid_speed++;
-                    err = out.speed_mps / 65536.0 - smp.true_speed_mps;
                     stat_add(&r->abs_speed, err);
                     if (fabs(err) > out.speed_bound_mps / 65536.0) r->viol_speed++;
                 }
                 if (out.heading_valid) {
+                    const double err = wrap180(hd - smp.yaw_deg);
                     r->valid_heading++;
-                    err = wrap180(hd - smp.yaw_deg);
                     stat_add(&r->abs_heading, err);
                     if (fabs(err) > out.heading_bound_deg / 65536.0) r->viol_heading++;
                 }
