@@ -191,11 +191,20 @@ int app_nav_bus_init(struct app_nav_bus *b, struct app_nav *nav, const struct ap
     b->next_acc_ns = hal_now_ns(c->hal) + b->acc_period_ns;
     b->next_cycle_ns = hal_now_ns(c->hal) + c->cycle_ns;
     b->last_cycle_ns = hal_now_ns(c->hal);
+    b->t_start_ns = b->last_cycle_ns - nav->nav.t_ns;
     b->last_gyro_ns = 0u;
     b->bus_ns_gyro = b->bus_ns_acc = 0u;
     b->reads_gyro = b->reads_acc = b->errors_gyro = b->errors_acc = b->missed_gyro = 0u;
     b->last_error = INC_OK;
     return INC_OK;
+}
+
+int app_nav_bus_uart(struct app_nav_bus *b, const char *data, size_t len)
+{
+    uint64_t now;
+    if (b == NULL || b->hal == NULL) return INC_ERR_NULL;
+    now = hal_now_ns(b->hal);
+    return app_nav_uart(b->nav, data, len, now > b->t_start_ns ? now - b->t_start_ns : 0u);
 }
 
 static void read_gyro(struct app_nav_bus *b)

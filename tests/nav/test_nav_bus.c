@@ -87,6 +87,25 @@ static void test_bus(void)
     CHECK(bus.reads_acc >= 324u && bus.reads_acc <= 326u);
     /* the turn reached the heading: 10 deg/s x 2.6 s (the offset is not learned: it turns) */
     CHECK_NEAR(h1 - h0, 26.0, 0.5);
+    /* a fix through the UART on the HAL clock: parsed and aligned with the nav clock (the
+     * reference point again, 39 m behind the track: judged against the history, refused as a
+     * jump - not as a time outside the ring) */
+    {
+        static const char rmc[] =
+            "$GPRMC,120000.00,A,4806.0000,N,01130.0000,E,29.158,090.00,010124,,,A*";
+        char line[128];
+        unsigned x = 0;
+        size_t j;
+        const uint32_t before = an.stats.fixes;
+        for (j = 1; rmc[j] != '*'; j++)
+            x ^= (unsigned char)rmc[j];
+        snprintf(line, sizeof line, "%s%02X\r\n", rmc, x);
+        CHECK(app_nav_bus_uart(&bus, line, strlen(line)) >= 0);
+        CHECK_EQ_INT(an.stats.nmea_sentences, 1);
+        CHECK_EQ_INT(an.stats.fixes, before);
+        CHECK_EQ_INT(an.stats.fixes_refused, 1);
+        CHECK_EQ_INT(an.nav.jumps, 1); /* the gate, not INC_ERR_RANGE */
+    }
     (void)t1;
     /* bus time per cycle and the physical bound of the same reads:
      * ADIS16255 read_sample: 3 frames of 16 bits at 500 ns (2 MHz), setup + hold 500 + 500 ns

@@ -86,7 +86,9 @@ int app_nav_init(struct app_nav *a, const struct app_nav_cfg *cfg);
 int app_nav_gyro(struct app_nav *a, fx_q16_t rate_dps, uint32_t dt_ns);
 /* One accelerometer sample (Q16 g, x forward, y left, z up). */
 int app_nav_accel(struct app_nav *a, const fx_q16_t acc_g[3]);
-/* UART bytes that arrived at t_arrival_ns (nav clock). Returns the fixes used (>= 0). */
+/* UART bytes that arrived at t_arrival_ns on the nav clock (the sum of the cycle lengths given to
+ * app_nav_cycle since init; app_nav_bus_uart converts from the HAL clock). Returns the fixes
+ * used (>= 0). */
 int app_nav_uart(struct app_nav *a, const char *data, size_t len, uint64_t t_arrival_ns);
 /* The 13 ms cycle. */
 int app_nav_cycle(struct app_nav *a, uint32_t dt_ns, struct nav_out *out);
@@ -100,6 +102,7 @@ struct app_nav_bus {
     const struct hal *hal;
     enum sca3000_variant acc_variant;
     uint64_t next_acc_ns, next_cycle_ns, last_gyro_ns, last_cycle_ns;
+    uint64_t t_start_ns; /* HAL time of nav clock 0 */
     uint32_t acc_period_ns, cycle_ns;
     /* bus time (ns the reads took, CS fall to return) */
     uint64_t bus_ns_gyro, bus_ns_acc;
@@ -118,6 +121,8 @@ struct app_nav_bus_cfg {
 /* Bring both parts up on the one bus (ADIS16255: 256 SPS, +-80 deg/s, data-ready on DIO0;
  * SCA3000 normal mode, SPI mode 0). Returns 0 or the drivers' error. */
 int app_nav_bus_init(struct app_nav_bus *b, struct app_nav *nav, const struct app_nav_bus_cfg *c);
+/* UART bytes that arrived now (HAL clock): app_nav_uart on the nav clock. */
+int app_nav_bus_uart(struct app_nav_bus *b, const char *data, size_t len);
 /* Run the scheduler until the hal clock reaches until_ns; every completed cycle's output goes to
  * *out (the last one). Returns the cycles completed or a negative error. */
 int app_nav_bus_run(struct app_nav_bus *b, uint64_t until_ns, struct nav_out *out);
