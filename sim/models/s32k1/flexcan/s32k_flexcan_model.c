@@ -54,7 +54,8 @@ static void log_frame(struct s32k_flexcan_model *m, uint16_t id, const uint8_t *
         return;
     }
     uint64_t us = t_ns / 1000u;
-    fprintf(m->log, "(%010llu.%06llu) %s %03X#", (unsigned long long)(us / 1000000u),
+    fprintf(m->log, "(%010llu.%06llu) %s %03X#",
+            (unsigned long long)(us / 1000000u + m->log_epoch_s),
             (unsigned long long)(us % 1000000u), m->iface, (unsigned)id);
     for (unsigned i = 0; i < dlc; i++) {
         fprintf(m->log, "%02X", d[i]);
@@ -245,6 +246,11 @@ int s32k_flexcan_model_inject(struct s32k_flexcan_model *m, uint16_t id, const u
         m->stats.rx_dropped++;
         return INC_ERR_BUS;
     }
+    /* the frame is on the bus (and in the log) whether a buffer takes it or not */
+    uint64_t end = (m->now_ns > m->bus_free_ns ? m->now_ns : m->bus_free_ns) +
+                   (uint64_t)(44u + 8u * dlc) * BIT_NS;
+    m->bus_free_ns = end + 3u * BIT_NS;
+    log_frame(m, id, data, dlc, end);
     uint32_t idw = (uint32_t)id << S32K_FLEXCAN_ID_STD_SHIFT;
     for (unsigned mb = 0; mb < m->n_mb; mb++) {
         uint32_t *w = &m->ram[mb * 4u];
@@ -260,9 +266,6 @@ int s32k_flexcan_model_inject(struct s32k_flexcan_model *m, uint16_t id, const u
         if (newcode == S32K_FLEXCAN_CODE_RX_OVERRUN) {
             m->stats.rx_overruns++;
         }
-        uint64_t end = (m->now_ns > m->bus_free_ns ? m->now_ns : m->bus_free_ns) +
-                       (uint64_t)(44u + 8u * dlc) * BIT_NS;
-        m->bus_free_ns = end + 3u * BIT_NS;
         w[1] = idw;
         w[2] = w[3] = 0u;
         for (unsigned b = 0; b < dlc; b++) {

@@ -23,7 +23,8 @@
  * error passive at TEC >= 128 as in ISO 11898-1; the buffer stays pending), bus off (FLTCONF 1x,
  * nothing is sent or received until cleared).
  *
- * The log: one line per transmitted frame, `(SSSSSSSSSS.UUUUUU) IFACE III#DDDDDDDDDDDDDDDD`
+ * The log: one line per frame on the bus (transmitted by the driver, or injected: the bus carries
+ * it whether a buffer takes it or not), `(SSSSSSSSSS.UUUUUU) IFACE III#DDDDDDDDDDDDDDDD`
  * (candump -l), ID in 3 hex digits, data in 2 hex digits per byte (uppercase).
  */
 #ifndef INCLINO_SIM_S32K_FLEXCAN_MODEL_H
@@ -59,6 +60,9 @@ struct s32k_flexcan_model {
     bool no_ack, bus_off;
     uint64_t now_ns, bus_free_ns;
     FILE *log;
+    uint64_t log_epoch_s; /* added to the log's seconds (0 after init; a harness sets a fixed
+                             wall-clock epoch, as candump writes, so that tools like log2asc
+                             that treat second 0 as "no time yet" read the log) */
     char iface[16];
     struct s32k_flexcan_model_stats stats;
 };
