@@ -76,8 +76,8 @@ int main(void)
         sink += (uint32_t)can_pack_output(&tx, &o, true, out, &n);
     }
     t = ticks();
-    printf("BENCH can_pack_output(DRIVING: INC_Attitude + INC_Status) %lu %lu\n",
-           (unsigned long)t, (unsigned long)base);
+    printf("BENCH can_pack_output(DRIVING: INC_Attitude + INC_Status) %lu %lu\n", (unsigned long)t,
+           (unsigned long)base);
     o.mode = APP_MODE_PARKED;
     o.epb.slope.slope_deg = 200000;
     o.epb.slope.grade_pct = 300000;
