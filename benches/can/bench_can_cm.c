@@ -32,13 +32,14 @@ static uint32_t ticks(void)
     return 0x00FFFFFFu - SYST_CVR;
 }
 
-__attribute__((noinline)) static int empty3(void *a, const void *b, void *c)
+__attribute__((noinline)) static int empty3(const void *a, const void *b, const void *c)
 {
     __asm__ volatile("" ::: "memory");
     return a != b && c != NULL;
 }
 
-__attribute__((noinline)) static int empty_out(void *a, const void *b, bool c, void *d, size_t *n)
+__attribute__((noinline)) static int empty_out(const void *a, const void *b, bool c, const void *d,
+                                               size_t *n)
 {
     __asm__ volatile("" ::: "memory");
     *n = 2;

@@ -236,8 +236,8 @@ int s32k_flexcan_receive(struct s32k_flexcan *dev, uint16_t *id, uint8_t data[8]
     int rc = INC_ERR_STALE;
     if (code == S32K_FLEXCAN_CODE_RX_FULL || code == S32K_FLEXCAN_CODE_RX_OVERRUN) {
         uint32_t idw = s32k_mmio_read32(mb_addr(dev, mb, 1u));
-        uint32_t w[2] = {s32k_mmio_read32(mb_addr(dev, mb, 2u)),
-                         s32k_mmio_read32(mb_addr(dev, mb, 3u))};
+        const uint32_t w[2] = {s32k_mmio_read32(mb_addr(dev, mb, 2u)),
+                               s32k_mmio_read32(mb_addr(dev, mb, 3u))};
         uint8_t n = (uint8_t)((cs & S32K_FLEXCAN_CS_DLC_MASK) >> S32K_FLEXCAN_CS_DLC_SHIFT);
         if (n > 8u) {
             n = 8u; /* classic CAN: a DLC of 9..15 carries 8 bytes */
