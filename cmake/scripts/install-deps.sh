@@ -23,6 +23,9 @@ packages="cmake make gcc g++ python3 libeigen3-dev \
     cppcheck clang-format valgrind sigrok-cli \
     python3-numpy python3-scipy curl ca-certificates gnuplot-nox \
     clang-14 libclang-rt-14-dev llvm-14"
+# CAN log checks: python3-canmatrix (decodes the candump log with the DBC; the Debian interpreter
+# /usr/bin/python3), can-utils (log2asc validates the candump format); docs/can.md
+packages="$packages python3-canmatrix can-utils"
 
 if [ "$(id -u)" -eq 0 ]; then
     sudo=""
