@@ -1,8 +1,6 @@
 /*
  * lf_e2e.c - libFuzzer entry for the E2E receiver and the CAN unpackers (firmware/services/e2e,
- * firmware/app/can). Not wired into CMake here: build it with the libFuzzer infrastructure, e.g.
- *   clang -fsanitize=fuzzer,address,undefined -Ifirmware/services/e2e/include
- *         -Ifirmware/app/can/include ... tests/fuzz/lf_e2e.c <the e2e, can and app sources>
+ * firmware/app/can): target `e2e` of tests/fuzz/CMakeLists.txt (the fuzz preset; docs/fuzzing.md).
  * Seeds: tests/fuzz/corpus/e2e/ (docs/can.md).
  *
  * The input is a script of records; the first byte of each selects:

@@ -1,9 +1,6 @@
 /*
- * lf_nmea.c - libFuzzer entry for the NMEA 0183 parser (drivers/gps_nmea). Not built by CMake
- * here (the fuzzing build wires the libFuzzer entries); by hand:
- *   clang -g -O1 -fsanitize=fuzzer,address,undefined -Idrivers/gps_nmea/include \
- *     -Ibase/error/include tests/fuzz/lf_nmea.c drivers/gps_nmea/gps_nmea.c -o lf_nmea
- *   ./lf_nmea tests/fuzz/corpus/nmea
+ * lf_nmea.c - libFuzzer entry for the NMEA 0183 parser (drivers/gps_nmea): target `nmea` of
+ * tests/fuzz/CMakeLists.txt (the fuzz preset; docs/fuzzing.md), seeds in tests/fuzz/corpus/nmea.
  * The input is fed whole, then again in reads of 1 and 7 bytes (the first input byte picks a
  * third read size): the decoded sentences must be the same however the stream is cut, and every
  * result must keep the invariants of nmea_check.h. A violation aborts (a finding).
