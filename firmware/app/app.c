@@ -27,8 +27,8 @@ _Static_assert((int)SENSOR_FAMILY_SCA3000 == (int)CALREC_FAMILY_SCA3000, "family
 _Static_assert((int)SENSOR_FAMILY_ADIS1625X == (int)CALREC_FAMILY_ADIS1625X, "family numbers");
 _Static_assert((int)SENSOR_FAMILY_ADIS163XX == (int)CALREC_FAMILY_ADIS163XX, "family numbers");
 
-/* Internal block flag: every sample so far carried a temperature (bit 8, never reported). */
-#define BLOCK_ALL_TEMP 0x100u
+/* Internal block flag: every sample so far carried a temperature (bit 31, never reported). */
+#define BLOCK_ALL_TEMP 0x80000000u
 
 /* ---- Configuration -------------------------------------------------------------------------- */
 
@@ -96,6 +96,7 @@ int app_cfg_default(struct app_cfg *c, uint32_t rate_mhz)
     c->temp_step_c = FX_Q16_HALF;
     c->temp_margin_c = FX_Q16_ONE;
     c->max_sensor_errors = 0u;
+    c->noise_floor_g = (fx_q16_t)(c->budget.noise_sigma_g / APP_QUIET_DIV);
     return INC_OK;
 }
 
@@ -108,7 +109,8 @@ int app_cfg_check(const struct app_cfg *cfg)
     }
     if (cfg->avg_n == 0u || cfg->avg_n > FX_SUM_MAX_COUNT || cfg->still.window < STILL_WINDOW_MIN ||
         cfg->still.window > STILL_WINDOW_MAX || cfg->avg_n % cfg->still.window != 0u ||
-        cfg->temp_step_c <= 0 || cfg->temp_margin_c < 0 || !budget_ok(&cfg->budget)) {
+        cfg->temp_step_c <= 0 || cfg->temp_margin_c < 0 || cfg->noise_floor_g < 0 ||
+        !budget_ok(&cfg->budget)) {
         return INC_ERR_INVAL;
     }
     if (slope_sigma_factor(cfg->budget.lifetime_runs, cfg->budget.exceed_expected, &k) != INC_OK) {
@@ -306,12 +308,13 @@ static void finish_block(struct app *a, struct app_result *res)
     in.calibrated = cal;
     (void)slope_estimate(&sc, &in, &res->slope); /* sc passed app_cfg_check's rules */
 
-    res->flags = a->flags & 0xFFu;
+    res->flags = a->flags & ~BLOCK_ALL_TEMP;
     if (!cal) res->flags |= APP_F_NOT_CALIBRATED;
     if (!off_comp || !scale_comp) res->flags |= APP_F_TEMP_UNCOMP;
     if (a->errors > a->cfg.max_sensor_errors) res->flags |= APP_F_SENSOR;
     if (!in.still) res->flags |= APP_F_NOT_STILL;
-    res->valid = res->slope.valid && (res->flags & (APP_F_SENSOR | APP_F_SATURATED)) == 0u;
+    res->valid = res->slope.valid &&
+                 (res->flags & (APP_F_SENSOR | APP_F_SATURATED | APP_F_QUIET)) == 0u;
 }
 
 /* ---- Per sample --------------------------------------------------------------------------------- */
@@ -374,7 +377,13 @@ int app_step(struct app *a, const struct sensor_sample *s, int read_err, struct 
         const struct still_window *w = still_last(&a->still);
         if (w != NULL) {
             const uint8_t sa = a->cfg.slope.slope_axis, ga = a->cfg.slope.gravity_axis;
+            const uint64_t floor_g = (uint64_t)(uint32_t)a->cfg.noise_floor_g;
             if (w->accel_var[sa] > a->var_max) a->var_max = w->accel_var[sa];
+            for (i = 0; i < 3u; i++) {
+                if (w->accel_var[i] < floor_g * floor_g) {
+                    a->flags |= APP_F_QUIET;
+                }
+            }
             if (a->cfg.slope.method == SLOPE_TWO_AXIS && w->accel_var[ga] > a->var_max) {
                 a->var_max = w->accel_var[ga];
             }

@@ -15,6 +15,7 @@
 struct script {
     struct sensor_sample s; /* what every read returns ... */
     int32_t wobble_x;       /* ... with x + wobble on odd reads, x - wobble on even ones */
+    int32_t wobble_yz;      /* ... and y, z likewise */
     uint32_t fail_every;    /* every n-th read fails (0: never) */
     int fail_err;
     int id_err; /* identity read error */
@@ -31,6 +32,8 @@ static int script_read(void *ctx, struct sensor_sample *out)
     }
     *out = p->s;
     out->accel_g[0] += (p->reads & 1u) ? p->wobble_x : -p->wobble_x;
+    out->accel_g[1] += (p->reads & 1u) ? p->wobble_yz : -p->wobble_yz;
+    out->accel_g[2] += (p->reads & 1u) ? p->wobble_yz : -p->wobble_yz;
     return INC_OK;
 }
 
@@ -170,6 +173,7 @@ static void cfg_small(void)
     REQUIRE(app_cfg_default(&cfg, 819200u) == INC_OK);
     cfg.still.window = 16u;
     cfg.avg_n = 64u;
+    cfg.noise_floor_g = 0; /* scripted samples are noiseless (test_noise_floor checks it) */
 }
 
 /* Run one block of scripted samples through app_step. */
@@ -477,6 +481,54 @@ static void test_block_flags(void)
     CHECK_EQ_INT(r.missed, 128);
 }
 
+/* The noise-floor check: a quiet accelerometer axis is a frozen or stuck output. */
+static void test_noise_floor(void)
+{
+    struct app_result r;
+    struct calrec rec;
+    script_reset();
+    cfg_small();
+    store_reset();
+    make_record(&rec, true);
+    REQUIRE(calstore_save(&store, &rec, NULL) == INC_OK);
+    {
+        struct app_cfg d;
+        REQUIRE(app_cfg_default(&d, 819200u) == INC_OK);
+        CHECK_EQ_INT(d.noise_floor_g, d.budget.noise_sigma_g / APP_QUIET_DIV); /* 4 mg / 4 */
+        cfg.noise_floor_g = d.noise_floor_g;
+    }
+    REQUIRE(app_init(&app, &cfg, &sensor, &store) == INC_OK);
+    /* constant samples (a frozen part): every window has variance 0 on every axis */
+    REQUIRE(run_block(&r) == INC_OK);
+    CHECK(!r.valid);
+    CHECK((r.flags & APP_F_QUIET) != 0u);
+    CHECK(r.slope.valid); /* the slope itself passed: the application says no */
+    /* +-2 mg on x only: y and z still quiet (a stuck pair of axes) */
+    sc.wobble_x = G(2);
+    REQUIRE(run_block(&r) == INC_OK);
+    CHECK((r.flags & APP_F_QUIET) != 0u);
+    CHECK(!r.valid);
+    /* +-2 mg on every axis (calibrated rms ~2 mg): above the 1 mg floor, valid */
+    sc.wobble_yz = G(2);
+    REQUIRE(run_block(&r) == INC_OK);
+    CHECK_EQ_HEX(r.flags & APP_F_QUIET, 0u);
+    CHECK(r.valid);
+    /* a floor of 3 mg: the 2 mg part is "too quiet" */
+    cfg.noise_floor_g = G(3);
+    REQUIRE(app_init(&app, &cfg, &sensor, &store) == INC_OK);
+    REQUIRE(run_block(&r) == INC_OK);
+    CHECK((r.flags & APP_F_QUIET) != 0u);
+    CHECK(!r.valid);
+    sc.wobble_x = sc.wobble_yz = 0;
+    cfg.noise_floor_g = 0;                /* 0: no check */
+    REQUIRE(app_init(&app, &cfg, &sensor, &store) == INC_OK);
+    REQUIRE(run_block(&r) == INC_OK);
+    CHECK((r.flags & APP_F_QUIET) == 0u);
+    CHECK(r.valid);
+    cfg.noise_floor_g = -1;
+    CHECK_ERR(app_cfg_check(&cfg), INC_ERR_INVAL);
+}
+
 static void test_eol(void)
 {
     static const int32_t one = FX_Q16_ONE;
@@ -567,6 +619,7 @@ int main(void)
     UNIT_RUN(test_calibrated);
     UNIT_RUN(test_binding_and_store);
     UNIT_RUN(test_block_flags);
+    UNIT_RUN(test_noise_floor);
     UNIT_RUN(test_eol);
     return unit_report();
 }

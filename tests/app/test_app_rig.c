@@ -74,6 +74,7 @@ static void test_adis16405_exact(void)
     REQUIRE(epb_rig_init(&rig, EPB_RIG_ADIS16405, &ideal, 1u) == INC_OK);
     cfg_small();
     cfg.budget.temp_uncomp_g = 0; /* an ideal part does not drift: no temperature model needed */
+    cfg.noise_floor_g = 0;        /* nor has it noise: the noise-floor check would (rightly) trip */
     cfg.budget.tscale_uncomp = 0;
     REQUIRE(epb_rig_power_up(&rig, &cfg) == INC_OK);
     CHECK_ERR(rig.app.cal_status, INC_ERR_NOT_CALIBRATED);

@@ -102,6 +102,7 @@ int eol(enum epb_rig_part part, const sim_calpart_params &type, uint64_t seed, f
     const epb::Budget bud = epb::derive_budget(type, st, pi->acc_lsb_g, pi->temp_lsb_c, n_face,
                                                cfg);
     cfg.budget = bud.b;
+    cfg.noise_floor_g = bud.b.noise_sigma_g / APP_QUIET_DIV; // the part's rated noise floor
     s.part = part;
     s.type = type;
     s.seed = seed;

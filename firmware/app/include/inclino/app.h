@@ -93,6 +93,10 @@ struct app_cfg {
                                    there, and temp_comp_g must be characterised over the range
                                    widened by it) */
     uint32_t max_sensor_errors; /* read errors tolerated per block; more: APP_F_SENSOR */
+    fx_q16_t noise_floor_g;     /* the noise-floor check (APP_F_QUIET): a stillness window of an
+                                   accelerometer axis with an rms below this is a frozen or stuck
+                                   output; the part's rated rms per sample / APP_QUIET_DIV
+                                   (0: no check, for noiseless scripted or ideal parts) */
 };
 
 /* Why an application result is not valid, besides the slope flags (app_result.flags). */
@@ -105,6 +109,19 @@ struct app_cfg {
 #define APP_F_NOT_STILL \
     0x10u /* a stillness window of the block was not quiet, or the
                                       detector was not at rest at its end */
+#define APP_F_QUIET 0x20u /* an accelerometer axis was quieter than the part's noise floor over a
+                             stillness window: frozen or stuck output (never valid) */
+
+/*
+ * The noise-floor check: a real MEMS output always shows its white noise, a frozen or stuck
+ * one shows none. A stillness window of W samples whose variance on any accelerometer axis is
+ * below noise_floor_g^2 (noise_floor_g = rated rms / APP_QUIET_DIV) sets APP_F_QUIET. With W >= 64 the sample variance of
+ * Gaussian noise has a relative spread sqrt(2 / (W - 1)) <= 0.18, so 1/16 of the rated variance
+ * lies more than 5 spreads below it: a healthy part never trips it; the quantisation of a
+ * frozen output gives variance 0. app_cfg_default sets the floor from its rated 4 mg (1 mg);
+ * an integrator sets noise_floor_g = rated / APP_QUIET_DIV for the part it fits.
+ */
+#define APP_QUIET_DIV 4
 
 /* One estimate (one block of avg_n samples). */
 struct app_result {
