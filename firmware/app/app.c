@@ -35,6 +35,7 @@ _Static_assert((int)SENSOR_FAMILY_ADIS163XX == (int)CALREC_FAMILY_ADIS163XX, "fa
 static bool budget_ok(const struct app_budget *b)
 {
     return b->sensitivity >= 0 && b->sensitivity < FX_Q30_HALF && b->offset_g >= 0 &&
+           b->offset_drift_g >= 0 &&
            b->nonlinearity_g >= 0 && b->temp_comp_g >= 0 && b->temp_uncomp_g >= 0 &&
            b->sensitivity_uncal >= 0 && b->sensitivity_uncal < FX_Q30_HALF &&
            b->tscale_uncomp >= 0 && b->tscale_uncomp < FX_Q30_HALF && b->offset_uncal_g >= 0 &&
@@ -83,6 +84,7 @@ int app_cfg_default(struct app_cfg *c, uint32_t rate_mhz)
     c->slope.budget.k_sigma = FX_Q16_INT(6);
     c->budget.sensitivity = 0;
     c->budget.offset_g = 0;
+    c->budget.offset_drift_g = MG(10);
     c->budget.nonlinearity_g = MG(10);
     c->budget.temp_comp_g = MG(10);
     c->budget.temp_uncomp_g = MG(50);
@@ -119,7 +121,7 @@ int app_cfg_check(const struct app_cfg *cfg)
     /* The slope configuration with a budget of the kind app_step composes. */
     sc = cfg->slope;
     sc.budget.sensitivity = cfg->budget.sensitivity;
-    sc.budget.offset_g = cfg->budget.offset_g;
+    sc.budget.offset_g = fx_add(cfg->budget.offset_g, cfg->budget.offset_drift_g);
     sc.budget.nonlinearity_g = cfg->budget.nonlinearity_g;
     sc.budget.temperature_g = cfg->budget.temp_comp_g;
     sc.budget.noise_sigma_g = cfg->budget.noise_sigma_g;
@@ -128,6 +130,8 @@ int app_cfg_check(const struct app_cfg *cfg)
 }
 
 /* ---- Block bookkeeping ------------------------------------------------------------------------ */
+
+static void offset_ref_reset(struct app *a);
 
 static void block_reset(struct app *a)
 {
@@ -193,8 +197,17 @@ int app_init(struct app *a, const struct app_cfg *cfg, const struct sensor *sens
     a->temp_set = false;
     a->temp_applied = cfg->temp_default_c;
     block_reset(a);
+    offset_ref_reset(a);
     a->ready = true;
     return INC_OK;
+}
+
+static void offset_ref_reset(struct app *a)
+{
+    a->ref_set = false;
+    a->offset_fault = false;
+    a->ref_noise_g = 0;
+    a->ref_a[0] = a->ref_a[1] = a->ref_a[2] = 0;
 }
 
 bool app_calibrated(const struct app *a)
@@ -206,6 +219,7 @@ void app_restart(struct app *a)
 {
     if (a != NULL && a->ready) {
         block_reset(a);
+        offset_ref_reset(a);
     }
 }
 
@@ -246,6 +260,42 @@ static fx_q16_t sigma_from_var(uint64_t var, uint32_t w)
         r++;
     }
     return r > (uint64_t)INT32_MAX ? INT32_MAX : (fx_q16_t)r;
+}
+
+/* The offset-change check (app.h): reference, comparison, latch. */
+static void offset_check(struct app *a, struct app_result *res, bool still_cal)
+{
+    const fx_q16_t drift = a->cfg.budget.offset_drift_g;
+    const fx_q16_t n = res->slope.noise_g;
+    const uint8_t ax[2] = {a->cfg.slope.slope_axis, a->cfg.slope.gravity_axis};
+    unsigned i;
+    if (drift == 0) {
+        return; /* no ageing term, no check (app.h) */
+    }
+    if (still_cal && !a->offset_fault) {
+        if (!a->ref_set) {
+            if (res->slope.valid && (res->flags & (APP_F_SENSOR | APP_F_SATURATED | APP_F_QUIET)) ==
+                                        0u) {
+                for (i = 0; i < 3u; i++) {
+                    a->ref_a[i] = res->accel_g[i];
+                }
+                a->ref_noise_g = n;
+                a->ref_set = true;
+            }
+        } else {
+            const int64_t tol = (int64_t)drift - n - a->ref_noise_g;
+            for (i = 0; i < 2u; i++) {
+                int64_t d = (int64_t)res->accel_g[ax[i]] - a->ref_a[ax[i]];
+                d = d < 0 ? -d : d;
+                if (tol <= 0 || d > tol) {
+                    a->offset_fault = true;
+                }
+            }
+        }
+    }
+    if (a->offset_fault) {
+        res->flags |= APP_F_OFFSET_STEP;
+    }
 }
 
 static void finish_block(struct app *a, struct app_result *res)
@@ -292,7 +342,7 @@ static void finish_block(struct app *a, struct app_result *res)
             sc.budget.sensitivity = FX_Q30_HALF - 1; /* the bound is flagged long before this */
         }
     }
-    sc.budget.offset_g = cal ? b->offset_g : b->offset_uncal_g;
+    sc.budget.offset_g = cal ? fx_add(b->offset_g, b->offset_drift_g) : b->offset_uncal_g;
     sc.budget.nonlinearity_g = b->nonlinearity_g;
     sc.budget.temperature_g = off_comp ? b->temp_comp_g : b->temp_uncomp_g;
     sc.budget.noise_sigma_g = res->sigma_meas_g > b->noise_sigma_g ? res->sigma_meas_g
@@ -313,8 +363,10 @@ static void finish_block(struct app *a, struct app_result *res)
     if (!off_comp || !scale_comp) res->flags |= APP_F_TEMP_UNCOMP;
     if (a->errors > a->cfg.max_sensor_errors) res->flags |= APP_F_SENSOR;
     if (!in.still) res->flags |= APP_F_NOT_STILL;
+    offset_check(a, res, cal && in.still);
     res->valid = res->slope.valid &&
-                 (res->flags & (APP_F_SENSOR | APP_F_SATURATED | APP_F_QUIET)) == 0u;
+                 (res->flags & (APP_F_SENSOR | APP_F_SATURATED | APP_F_QUIET | APP_F_OFFSET_STEP)) ==
+                     0u;
 }
 
 /* ---- Per sample --------------------------------------------------------------------------------- */

@@ -173,7 +173,8 @@ static void cfg_small(void)
     REQUIRE(app_cfg_default(&cfg, 819200u) == INC_OK);
     cfg.still.window = 16u;
     cfg.avg_n = 64u;
-    cfg.noise_floor_g = 0; /* scripted samples are noiseless (test_noise_floor checks it) */
+    cfg.noise_floor_g = 0;        /* scripted samples are noiseless (test_noise_floor) */
+    cfg.budget.offset_drift_g = 0; /* nor do they age (test_offset_change) */
 }
 
 /* Run one block of scripted samples through app_step. */
@@ -529,6 +530,89 @@ static void test_noise_floor(void)
     CHECK_ERR(app_cfg_check(&cfg), INC_ERR_INVAL);
 }
 
+/* The offset-change check: the reference block, the tolerance, the latch, the restart. */
+static void test_offset_change(void)
+{
+    struct app_result r;
+    struct calrec rec;
+    fx_q16_t tol;
+    script_reset();
+    cfg_small();
+    store_reset();
+    make_record(&rec, true);
+    REQUIRE(calstore_save(&store, &rec, NULL) == INC_OK);
+    {
+        struct app_cfg d;
+        REQUIRE(app_cfg_default(&d, 819200u) == INC_OK);
+        CHECK_EQ_INT(d.budget.offset_drift_g, G(10)); /* [ADI-EPB]: 20 % of 50 mg */
+    }
+    cfg.budget.offset_drift_g = G(10);
+    cfg.budget.nonlinearity_g = cfg.budget.temp_comp_g = 0; /* keep the bound below 2 deg */
+    REQUIRE(app_init(&app, &cfg, &sensor, &store) == INC_OK);
+    REQUIRE(run_block(&r) == INC_OK); /* the reference */
+    CHECK(r.valid);
+    CHECK_EQ_HEX(r.flags & APP_F_OFFSET_STEP, 0u);
+    /* the bound carries the term: offset = residual + drift */
+    CHECK_EQ_INT(r.budget.offset_g, cfg.budget.offset_g + cfg.budget.offset_drift_g);
+    /* tolerance = drift - n - n_ref; the scripted block has the rated noise term on both */
+    tol = cfg.budget.offset_drift_g - 2 * r.slope.noise_g;
+    CHECK(tol > G(3) && tol < G(5));
+    /* a change of 3 mg on x (through the record's gain: about 3 mg calibrated): not flagged */
+    sc.s.accel_g[0] += G(3);
+    REQUIRE(run_block(&r) == INC_OK);
+    CHECK(r.valid);
+    CHECK_EQ_HEX(r.flags & APP_F_OFFSET_STEP, 0u);
+    /* 6 mg: flagged, not valid */
+    sc.s.accel_g[0] += G(3);
+    REQUIRE(run_block(&r) == INC_OK);
+    CHECK(!r.valid);
+    CHECK((r.flags & APP_F_OFFSET_STEP) != 0u);
+    /* latched: back at the reference value, still flagged */
+    sc.s.accel_g[0] -= G(6);
+    REQUIRE(run_block(&r) == INC_OK);
+    CHECK(!r.valid);
+    CHECK((r.flags & APP_F_OFFSET_STEP) != 0u);
+    /* app_restart takes a new reference */
+    app_restart(&app);
+    REQUIRE(run_block(&r) == INC_OK);
+    CHECK(r.valid);
+    CHECK_EQ_HEX(r.flags & APP_F_OFFSET_STEP, 0u);
+    /* on the gravity axis too */
+    sc.s.accel_g[2] -= G(8);
+    REQUIRE(run_block(&r) == INC_OK);
+    CHECK((r.flags & APP_F_OFFSET_STEP) != 0u);
+    sc.s.accel_g[2] += G(8);
+    /* a drift term too small for the noise terms: the check cannot tell, never valid after the
+     * reference */
+    cfg.budget.offset_drift_g = G(2);
+    REQUIRE(app_init(&app, &cfg, &sensor, &store) == INC_OK);
+    REQUIRE(run_block(&r) == INC_OK);
+    CHECK(r.valid);
+    REQUIRE(run_block(&r) == INC_OK);
+    CHECK((r.flags & APP_F_OFFSET_STEP) != 0u);
+    /* a block that is not still neither takes nor compares the reference */
+    cfg.budget.offset_drift_g = G(10);
+    sc.reads = 0;
+    REQUIRE(app_init(&app, &cfg, &sensor, &store) == INC_OK);
+    sc.wobble_x = G(100);
+    REQUIRE(run_block(&r) == INC_OK);
+    CHECK(!r.valid);
+    CHECK_EQ_HEX(r.flags & APP_F_OFFSET_STEP, 0u);
+    CHECK(!app.ref_set);
+    sc.wobble_x = 0;
+    /* 0: neither term nor check */
+    cfg.budget.offset_drift_g = 0;
+    REQUIRE(app_init(&app, &cfg, &sensor, &store) == INC_OK);
+    REQUIRE(run_block(&r) == INC_OK);
+    sc.s.accel_g[0] += G(50);
+    REQUIRE(run_block(&r) == INC_OK);
+    CHECK_EQ_HEX(r.flags & APP_F_OFFSET_STEP, 0u);
+    CHECK_EQ_INT(r.budget.offset_g, cfg.budget.offset_g);
+    sc.s.accel_g[0] -= G(50);
+    cfg.budget.offset_drift_g = -1;
+    CHECK_ERR(app_cfg_check(&cfg), INC_ERR_INVAL);
+}
+
 static void test_eol(void)
 {
     static const int32_t one = FX_Q16_ONE;
@@ -620,6 +704,7 @@ int main(void)
     UNIT_RUN(test_binding_and_store);
     UNIT_RUN(test_block_flags);
     UNIT_RUN(test_noise_floor);
+    UNIT_RUN(test_offset_change);
     UNIT_RUN(test_eol);
     return unit_report();
 }

@@ -63,6 +63,12 @@ extern "C" {
 struct app_budget {
     fx_q30_t sensitivity;       /* relative gain residual after calibration (Q30, < 0.5) */
     fx_q16_t offset_g;          /* offset residual after calibration */
+    fx_q16_t offset_drift_g;    /* offset change after calibration the part type may show over
+                                   its life (stress, ageing; [ADI-EPB]: the 20 % of the 50 mg
+                                   total offset change that is not temperature, 10 mg). Added to
+                                   the offset term of a calibrated estimate; also the tolerance of
+                                   the offset-change check (APP_F_OFFSET_STEP); 0: neither term
+                                   nor check (a part that cannot age: scripted or ideal) */
     fx_q16_t nonlinearity_g;    /* nonlinearity the record leaves within +-max_slope_deg */
     fx_q16_t temp_comp_g;       /* offset drift left by the record's temperature model, inside
                                    the range the model was calibrated over */
@@ -123,6 +129,25 @@ struct app_cfg {
  */
 #define APP_QUIET_DIV 4
 
+#define APP_F_OFFSET_STEP 0x40u /* the offset-change check: since the reference block the
+                                   slope- or gravity-axis mean moved by more than the bound's
+                                   offset-change term allows (a bias jump, a drift, a stuck bit);
+                                   latched until app_restart or app_init */
+
+/*
+ * The offset-change check. The first still, valid, calibrated block after app_init or
+ * app_restart is the reference (its means on the slope and gravity axes, and its noise term
+ * n_ref = k sigma / sqrt(N)). Every later still block with noise term n compares its means:
+ * |mean - ref| > offset_drift_g - n - n_ref on either axis (or n + n_ref >= offset_drift_g:
+ * the check cannot tell) sets APP_F_OFFSET_STEP and latches it. So an offset change b that is
+ * not detected satisfies |b| <= |mean - ref| + n + n_ref <= offset_drift_g, the term the bound
+ * carries: every valid estimate stays inside its bound under any offset change since the
+ * reference. A real tilt of the parked car by more than about offset_drift_g (0.5 deg at 10 mg)
+ * while the block stays still trips it too: the estimate is then not valid until the
+ * application restarts (the safe side). An offset change before the reference is the part's
+ * ageing, which the term covers only up to offset_drift_g (docs/safety.md).
+ */
+
 /* One estimate (one block of avg_n samples). */
 struct app_result {
     bool valid;                 /* slope.valid, and neither APP_F_SENSOR nor APP_F_SATURATED */
@@ -158,6 +183,10 @@ struct app {
     struct cal_gyro gyro;
     struct still still;
     fx_q16_t k_sigma;      /* noise factor from the lifetime exceedance rule */
+    bool ref_set;          /* the offset-change check's reference is taken */
+    bool offset_fault;     /* APP_F_OFFSET_STEP latched */
+    fx_q16_t ref_a[3];     /* reference block means, Q16 g */
+    fx_q16_t ref_noise_g;  /* its noise term k sigma / sqrt(N), Q16 g */
     int cal_status;        /* calstore_load status */
     bool temp_set;         /* the models were evaluated at least once */
     fx_q16_t temp_applied; /* temperature of that evaluation */
