@@ -99,6 +99,9 @@ int app_cfg_default(struct app_cfg *c, uint32_t rate_mhz)
     c->temp_margin_c = FX_Q16_ONE;
     c->max_sensor_errors = 0u;
     c->noise_floor_g = (fx_q16_t)(c->budget.noise_sigma_g / APP_QUIET_DIV);
+    c->rec_offset_max_g = MG(APP_REC_OFFSET_MAX_MG);
+    c->rec_gain_tol = (fx_q30_t)(((int64_t)APP_REC_GAIN_TOL_PPM << 30) / 1000000);
+    c->rec_misalign_max = (fx_q30_t)(((int64_t)APP_REC_MISALIGN_MAX_URAD << 30) / 1000000);
     return INC_OK;
 }
 
@@ -112,6 +115,7 @@ int app_cfg_check(const struct app_cfg *cfg)
     if (cfg->avg_n == 0u || cfg->avg_n > FX_SUM_MAX_COUNT || cfg->still.window < STILL_WINDOW_MIN ||
         cfg->still.window > STILL_WINDOW_MAX || cfg->avg_n % cfg->still.window != 0u ||
         cfg->temp_step_c <= 0 || cfg->temp_margin_c < 0 || cfg->noise_floor_g < 0 ||
+        cfg->rec_offset_max_g < 0 || cfg->rec_gain_tol < 0 || cfg->rec_misalign_max < 0 ||
         !budget_ok(&cfg->budget)) {
         return INC_ERR_INVAL;
     }
@@ -132,6 +136,32 @@ int app_cfg_check(const struct app_cfg *cfg)
 /* ---- Block bookkeeping ------------------------------------------------------------------------ */
 
 static void offset_ref_reset(struct app *a);
+
+static int64_t abs64(int64_t v)
+{
+    return v < 0 ? -v : v;
+}
+
+/* The record against the part type's limits (app_cfg rec_*; 0: that check off). */
+static bool rec_plausible(const struct app_cfg *c, const struct calrec *r)
+{
+    unsigned i, j;
+    for (i = 0; i < 3u; i++) {
+        if (c->rec_offset_max_g > 0 && abs64(r->acc_offset[i]) > c->rec_offset_max_g) {
+            return false;
+        }
+        if (c->rec_gain_tol > 0 && abs64((int64_t)r->acc_gain[i] - FX_Q30_ONE) > c->rec_gain_tol) {
+            return false;
+        }
+        for (j = 0; j < 3u; j++) {
+            if (i != j && c->rec_misalign_max > 0 &&
+                abs64(r->acc_misalign[i][j]) > c->rec_misalign_max) {
+                return false;
+            }
+        }
+    }
+    return true;
+}
 
 static void block_reset(struct app *a)
 {
@@ -189,6 +219,10 @@ int app_init(struct app *a, const struct app_cfg *cfg, const struct sensor *sens
     calrec_set_default(&a->rec);
     a->cal_status = store != NULL ? calstore_load(store, &a->id, &a->rec, NULL)
                                   : INC_ERR_NOT_CALIBRATED;
+    if (a->cal_status == INC_OK && !rec_plausible(cfg, &a->rec)) {
+        a->cal_status = INC_ERR_RANGE; /* intact, bound to this part, but not of its type */
+        calrec_set_default(&a->rec);
+    }
     err = cal_acc_init(&a->acc, a->rec.valid ? &a->rec : NULL, cfg->temp_default_c);
     if (a->cal_status == INC_OK && err != INC_OK) {
         a->cal_status = err; /* a record that cannot describe this part at any temperature */

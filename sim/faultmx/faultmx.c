@@ -32,6 +32,40 @@ static uint8_t slope_reg(const struct epb_rig *r)
     return r->info->adis ? 0x0Au : 0x05u; /* ADIS XACCL_OUT; SCA3000 X_MSB (8-bit registers) */
 }
 
+/* The station's verification: the unit powered up again with its record, every face measured
+ * and checked (app_eol_verify). */
+static int eol_verify(struct epb_rig *r, const struct fmx_setup *s, struct fmx_result *out)
+{
+    const uint32_t n = (uint32_t)(r->info->rate_sps + 0.5);
+    const fx_q16_t tol = (fx_q16_t)lround(FMX_EOL_VERIFY_TOL_G * 65536.0);
+    int f, err, st = INC_OK;
+    err = epb_rig_power_up(r, &s->cfg);
+    if (err != INC_OK) {
+        return err;
+    }
+    out->eol_dev_g = 0.0;
+    for (f = 0; f < CAL_FACES; f++) {
+        struct app_face face;
+        fx_q16_t dev = 0;
+        int v;
+        epb_rig_station(r, f, 25.0);
+        epb_rig_wait(r, 0.2);
+        err = app_eol_face(&r->app, n, FX_Q16_INT(1) / 20, FX_Q16_INT(2), &face);
+        if (err != INC_OK) {
+            return err;
+        }
+        v = app_eol_verify(&r->app, &face, f, tol, &dev);
+        if (dev / 65536.0 > out->eol_dev_g) {
+            out->eol_dev_g = dev / 65536.0;
+        }
+        if (v != INC_OK && st == INC_OK) {
+            st = v;
+        }
+    }
+    out->eol_status = st;
+    return INC_OK;
+}
+
 /* The record faults: written into the flash before the power-up. */
 static int record_fault(struct epb_rig *r, const struct fmx_setup *s, const struct fmx_case *c)
 {
@@ -178,8 +212,16 @@ int fmx_run(const struct fmx_setup *s, const struct fmx_case *c, struct fmx_resu
     }
     out->true_deg = veh.slope_deg;
     err = record_fault(r, s, c);
+    if (err == INC_OK && s->eol_verify && (c->fault == FMX_NONE || c->fault == FMX_REC_OFFSET)) {
+        err = eol_verify(r, s, out);
+    }
     if (err != INC_OK) {
         return err;
+    }
+    if (out->eol_status != INC_OK) {
+        out->detected = true; /* rejected at the end of line: the unit never ships */
+        out->latency = 0;
+        return INC_OK;
     }
     epb_rig_park(r, &veh);
     epb_rig_wait(r, 1.0);

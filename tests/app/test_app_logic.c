@@ -613,6 +613,105 @@ static void test_offset_change(void)
     CHECK_ERR(app_cfg_check(&cfg), INC_ERR_INVAL);
 }
 
+/* The record against the part type's limits at app_init. */
+static void test_record_plausibility(void)
+{
+    struct calrec rec;
+    struct app_cfg d;
+    script_reset();
+    REQUIRE(app_cfg_default(&d, 819200u) == INC_OK);
+    CHECK_EQ_INT(d.rec_offset_max_g, G(100));
+    CHECK_EQ_INT(d.rec_gain_tol, 107374182);     /* 0.1 in Q30 */
+    CHECK_EQ_INT(d.rec_misalign_max, 37580963);  /* 0.035 in Q30 */
+    cfg_small();
+    /* at the limits: loaded */
+    store_reset();
+    make_record(&rec, true);
+    rec.acc_offset[1] = -G(100);
+    rec.acc_gain[2] = FX_Q30_ONE + cfg.rec_gain_tol;
+    rec.acc_misalign[0][1] = -cfg.rec_misalign_max;
+    REQUIRE(calstore_save(&store, &rec, NULL) == INC_OK);
+    REQUIRE(app_init(&app, &cfg, &sensor, &store) == INC_OK);
+    CHECK_OK(app.cal_status);
+    CHECK(app_calibrated(&app));
+    /* one step beyond each: intact and bound to this part, but refused */
+    {
+        int k;
+        for (k = 0; k < 3; k++) {
+            struct app_result r;
+            store_reset();
+            make_record(&rec, true);
+            if (k == 0) rec.acc_offset[1] = -G(100) - 1;
+            if (k == 1) rec.acc_gain[2] = FX_Q30_ONE - cfg.rec_gain_tol - 1;
+            if (k == 2) rec.acc_misalign[2][0] = cfg.rec_misalign_max + 1;
+            REQUIRE(calstore_save(&store, &rec, NULL) == INC_OK);
+            REQUIRE(app_init(&app, &cfg, &sensor, &store) == INC_OK);
+            CHECK_ERR(app.cal_status, INC_ERR_RANGE);
+            CHECK(!app_calibrated(&app));
+            REQUIRE(run_block(&r) == INC_OK);
+            CHECK(!r.valid);
+            CHECK((r.flags & APP_F_NOT_CALIBRATED) != 0u);
+        }
+    }
+    /* 0: that check off */
+    cfg.rec_offset_max_g = 0;
+    store_reset();
+    make_record(&rec, true);
+    rec.acc_offset[1] = G(300);
+    REQUIRE(calstore_save(&store, &rec, NULL) == INC_OK);
+    REQUIRE(app_init(&app, &cfg, &sensor, &store) == INC_OK);
+    CHECK_OK(app.cal_status);
+    cfg.rec_gain_tol = -1;
+    CHECK_ERR(app_cfg_check(&cfg), INC_ERR_INVAL);
+}
+
+/* The end-of-line verification: calibrated face against +-1 g. */
+static void test_eol_verify(void)
+{
+    struct calrec rec;
+    struct app_face f;
+    struct cal_acc ref;
+    fx_q16_t out[3], dev = -1;
+    int64_t exp_dev = 0;
+    unsigned i;
+    script_reset();
+    cfg_small();
+    store_reset();
+    make_record(&rec, false);
+    REQUIRE(calstore_save(&store, &rec, NULL) == INC_OK);
+    REQUIRE(app_init(&app, &cfg, &sensor, &store) == INC_OK);
+    REQUIRE(app_calibrated(&app));
+    /* a raw XP face: x = 1.01 g + 10 mg (the record's gain and offset) plus 3 mg, y 2 mg, z -1 mg */
+    memset(&f, 0, sizeof f);
+    f.accel_g[0] = G(1023);
+    f.accel_g[1] = G(2);
+    f.accel_g[2] = -G(1);
+    f.temp_c = FX_Q16_INT(25);
+    f.flags = SENSOR_S_HAVE_TEMP;
+    rec.valid = true;
+    REQUIRE(cal_acc_init(&ref, &rec, FX_Q16_INT(25)) == INC_OK);
+    REQUIRE(cal_acc_apply(&ref, f.accel_g, out) == INC_OK);
+    for (i = 0; i < 3u; i++) {
+        int64_t d = (int64_t)out[i] - (i == 0u ? FX_Q16_ONE : 0);
+        d = d < 0 ? -d : d;
+        if (d > exp_dev) exp_dev = d;
+    }
+    CHECK(exp_dev > G(1) && exp_dev < G(5));
+    CHECK_OK(app_eol_verify(&app, &f, CAL_FACE_XP, (fx_q16_t)exp_dev, &dev));
+    CHECK_EQ_INT(dev, exp_dev);
+    CHECK_ERR(app_eol_verify(&app, &f, CAL_FACE_XP, (fx_q16_t)exp_dev - 1, &dev), INC_ERR_RANGE);
+    /* the same face claimed as XN: 2 g off */
+    CHECK_ERR(app_eol_verify(&app, &f, CAL_FACE_XN, G(5), &dev), INC_ERR_RANGE);
+    CHECK(dev > G(1990));
+    CHECK_ERR(app_eol_verify(&app, &f, 6, G(5), NULL), INC_ERR_INVAL);
+    CHECK_ERR(app_eol_verify(&app, &f, CAL_FACE_XP, -1, NULL), INC_ERR_INVAL);
+    CHECK_ERR(app_eol_verify(NULL, &f, CAL_FACE_XP, G(5), NULL), INC_ERR_NULL);
+    /* no record: nothing to verify */
+    store_reset();
+    REQUIRE(app_init(&app, &cfg, &sensor, &store) == INC_OK);
+    CHECK_ERR(app_eol_verify(&app, &f, CAL_FACE_XP, G(5), NULL), INC_ERR_NOT_CALIBRATED);
+}
+
 static void test_eol(void)
 {
     static const int32_t one = FX_Q16_ONE;
@@ -705,6 +804,8 @@ int main(void)
     UNIT_RUN(test_block_flags);
     UNIT_RUN(test_noise_floor);
     UNIT_RUN(test_offset_change);
+    UNIT_RUN(test_record_plausibility);
+    UNIT_RUN(test_eol_verify);
     UNIT_RUN(test_eol);
     return unit_report();
 }

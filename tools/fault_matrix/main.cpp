@@ -40,7 +40,8 @@ uint32_t latency_limit(uint32_t avg_n)
     return 2u * avg_n;
 }
 
-int eol(enum epb_rig_part part, const sim_calpart_params &type, uint64_t seed, fmx_setup &s)
+int eol(enum epb_rig_part part, const sim_calpart_params &type, uint64_t seed, bool baseline,
+        fmx_setup &s)
 {
     struct epb_rig *rig = epb_rig_instance();
     int err = epb_rig_init(rig, part, &type, seed);
@@ -103,6 +104,14 @@ int eol(enum epb_rig_part part, const sim_calpart_params &type, uint64_t seed, f
                                                cfg);
     cfg.budget = bud.b;
     cfg.noise_floor_g = bud.b.noise_sigma_g / APP_QUIET_DIV; // the part's rated noise floor
+    s.eol_verify = !baseline;
+    if (baseline) { // the diagnostics of the fault matrix off: the figure before them
+        cfg.noise_floor_g = 0;
+        cfg.budget.offset_drift_g = 0;
+        cfg.rec_offset_max_g = 0;
+        cfg.rec_gain_tol = 0;
+        cfg.rec_misalign_max = 0;
+    }
     s.part = part;
     s.type = type;
     s.seed = seed;
@@ -191,8 +200,10 @@ bool unum(const char *s, uint64_t &out)
 void usage()
 {
     std::fprintf(stderr,
-                 "usage: fault_matrix [--full] [--csv FILE] [--seed N] [--blocks N]\n"
+                 "usage: fault_matrix [--full] [--baseline] [--csv FILE] [--seed N] [--blocks N]\n"
                  "  --full       every amplitude and onset (default: the short matrix of CI)\n"
+                 "  --baseline   the matrix's diagnostics off (noise floor, offset-change term and\n"
+                 "               check, record plausibility, end-of-line verification)\n"
                  "  --csv FILE   one row per case\n"
                  "  --seed N     noise and vibration seed (default 1)\n"
                  "  --blocks N   estimates per case, 2..100 (default 5: 12.5 s parked)\n");
@@ -203,7 +214,7 @@ void usage()
 int main(int argc, char **argv)
 {
     tool_summary_begin("fault_matrix");
-    bool full = false;
+    bool full = false, baseline = false;
     std::string csv_path;
     uint64_t seed = 1, blocks = 5;
     for (int i = 1; i < argc; i++) {
@@ -212,6 +223,8 @@ int main(int argc, char **argv)
         bool ok = true;
         if (a == "--full")
             full = true;
+        else if (a == "--baseline")
+            baseline = true;
         else if (a == "--csv") {
             ok = v != nullptr && *v != '\0';
             if (ok) csv_path = v;
@@ -242,7 +255,7 @@ int main(int argc, char **argv)
         }
         std::fprintf(csv, "part,fault,amp,onset_s,bit,slope_step_deg,modelled,init,cal,detected,latency_samples,"
                           "latency_limit,estimates,valid,valid_wrong,read_errors,fault_word,"
-                          "max_err_deg,bound_deg,verdict\n");
+                          "max_err_deg,bound_deg,eol_verify,eol_dev_mg,verdict\n");
     }
     const std::vector<Case> cases = matrix(full);
     fmx_setup setups[EPB_RIG_PARTS];
@@ -250,10 +263,10 @@ int main(int argc, char **argv)
     sim_calpart_params type;
     sim_calpart_paper(&type);
     unsigned n = 0, detected = 0, harmless = 0, valid_wrong = 0, late = 0, unmodelled = 0,
-             refused = 0, false_alarms = 0, vw_estimates = 0;
+             refused = 0, false_alarms = 0, vw_estimates = 0, eol_false = 0;
     for (const Case &k : cases) {
         if (!have[k.part]) {
-            const int err = eol(k.part, type, seed, setups[k.part]);
+            const int err = eol(k.part, type, seed, baseline, setups[k.part]);
             if (err != INC_OK) {
                 std::fprintf(stderr, "fault_matrix: end of line failed (%s)\n", inc_err_name(err));
                 return tool_summary_error(inc_err_name(err), 2);
@@ -283,11 +296,13 @@ int main(int argc, char **argv)
                 vw_estimates += r.valid_wrong;
             }
             if (k.c.fault == FMX_NONE) {
+            if (r.eol_status != INC_OK) eol_false++;
                 if (r.detected) false_alarms++;
                 verdict = r.detected ? "false-alarm" : (r.valid_wrong ? "VALID-WRONG" : "ok");
             } else if (r.detected && r.latency <= lim) {
                 detected++;
-                if (r.latency == 0 && (r.init_status != 0 || r.cal_status != 0)) refused++;
+                if (r.latency == 0 && (r.init_status != 0 || r.cal_status != 0 || r.eol_status != 0))
+                    refused++;
                 verdict = r.valid_wrong ? "VALID-WRONG" : "detected";
             } else if (r.detected && r.valid_wrong == 0) {
                 // detected after the stated latency, but no estimate was wrong before: harmless
@@ -304,13 +319,14 @@ int main(int argc, char **argv)
         }
         const char *pname = epb_rig_part_get(k.part)->name;
         if (csv != nullptr) {
-            std::fprintf(csv, "%s,%s,%g,%g,%u,%g,%d,%s,%s,%d,%ld,%u,%u,%u,%u,%u,0x%06x,%.4f,%.4f,%s\n",
+            std::fprintf(csv, "%s,%s,%g,%g,%u,%g,%d,%s,%s,%d,%ld,%u,%u,%u,%u,%u,0x%06x,%.4f,%.4f,%s,%.3f,%s\n",
                          pname, fmx_fault_name(k.c.fault), k.c.amp, k.c.onset_s, k.c.bit,
                          k.c.slope_step_deg, modelled ? 1 : 0, inc_err_name(r.init_status), inc_err_name(r.cal_status),
                          r.detected ? 1 : 0,
                          r.latency == UINT32_MAX ? -1L : static_cast<long>(r.latency), lim,
                          r.estimates, r.valid, r.valid_wrong, r.read_errors, r.fault_word,
-                         r.max_err_deg, r.bound_deg, verdict.c_str());
+                         r.max_err_deg, r.bound_deg, inc_err_name(r.eol_status),
+                         r.eol_dev_g * 1e3, verdict.c_str());
         }
         std::printf("%-11s %-13s amp %-7g onset %-4g bit %-2u step %-7g %-12s det %d lat %6ld  valid %u/%u "
                     "wrong %u  word 0x%06x  max|err| %.3f bound %.3f\n",
@@ -323,8 +339,9 @@ int main(int argc, char **argv)
         std::fprintf(stderr, "fault_matrix: write error %s\n", csv_path.c_str());
         return tool_summary_error("io", 2);
     }
-    const bool pass = valid_wrong == 0 && late == 0 && false_alarms == 0;
+    const bool pass = valid_wrong == 0 && late == 0 && false_alarms == 0 && eol_false == 0;
     tool_summary_add("matrix", "%s", full ? "full" : "short");
+    tool_summary_add("diagnostics", "%s", baseline ? "off" : "on");
     tool_summary_add("cases", "%u", n);
     tool_summary_add("detected", "%u", detected);
     tool_summary_add("refused", "%u", refused);
@@ -334,5 +351,6 @@ int main(int argc, char **argv)
     tool_summary_add("late", "%u", late);
     tool_summary_add("false_alarms", "%u", false_alarms);
     tool_summary_add("not_modelled", "%u", unmodelled);
+    tool_summary_add("eol_false_rejects", "%u", eol_false);
     return tool_summary_end(pass ? "ok" : "fail", pass ? 0 : 1);
 }

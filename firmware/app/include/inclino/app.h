@@ -103,6 +103,11 @@ struct app_cfg {
                                    accelerometer axis with an rms below this is a frozen or stuck
                                    output; the part's rated rms per sample / APP_QUIET_DIV
                                    (0: no check, for noiseless scripted or ideal parts) */
+    /* Plausibility of the loaded record against the part type's limits (app_init): a record
+     * beyond them leaves the application uncalibrated (cal_status INC_ERR_RANGE). 0: no check. */
+    fx_q16_t rec_offset_max_g; /* |acc_offset| per axis */
+    fx_q30_t rec_gain_tol;     /* |acc_gain - 1| per axis */
+    fx_q30_t rec_misalign_max; /* |off-diagonal acc_misalign| */
 };
 
 /* Why an application result is not valid, besides the slope flags (app_result.flags). */
@@ -260,6 +265,19 @@ int app_measure(struct app *a, struct app_result *res);
 /* Drop the block in progress and restart the stillness windows (e.g. after the vehicle moved). */
 void app_restart(struct app *a);
 
+/*
+ * Defaults of the record plausibility (app_cfg_default): the part type's limits with margin.
+ * [ADI-EPB]'s example part has an initial offset of 15 mg and a sensitivity error of 3 %; the
+ * simulated part A already has 34 mg and 3.1 %, and the ADIS16405's own accelerometer bias and
+ * sensitivity limits are not confirmed here (docs/unconfirmed-facts.md): 100 mg, 10 % and
+ * 35 mrad (2 deg) of cross-axis are loose enough for every part the project simulates and catch
+ * a record that is grossly wrong (a field of another unit, a sign, a scale). A wrong offset
+ * inside them is for the end-of-line verification (app_eol_verify, docs/safety.md).
+ */
+#define APP_REC_OFFSET_MAX_MG 100
+#define APP_REC_GAIN_TOL_PPM 100000
+#define APP_REC_MISALIGN_MAX_URAD 35000
+
 /* ---- End of line ------------------------------------------------------------------------- */
 
 /* A still face: raw (uncalibrated, nominal-scaled) means, exact to 0.5 LSB. */
@@ -296,6 +314,19 @@ int app_eol_six_position(const struct app_face face[CAL_FACES], struct calrec *r
  */
 int app_eol_save(struct app *a, struct calrec *rec, struct calstore *store,
                  struct calstore_info *info);
+
+/*
+ * End-of-line verification, after the record is saved and loaded again (a fresh app_init): the
+ * calibrated reading of a still face f (raw means from app_eol_face; the correction applied at
+ * the face's temperature) against the face's ideal specific force (enum cal_face: +-1 g on one
+ * axis, 0 on the others). *dev_g (may be NULL) = the largest |calibrated - ideal| over the
+ * axes. Returns 0 when *dev_g <= tol_g, INC_ERR_RANGE beyond (the station rejects the unit),
+ * INC_ERR_NOT_CALIBRATED when no record is applied, INC_ERR_NULL, INC_ERR_STATE, INC_ERR_INVAL
+ * (face, tol_g < 0). This is what catches a record with a correct CRC but a wrong value: the
+ * CRC only proves the record is the one written.
+ */
+int app_eol_verify(struct app *a, const struct app_face *f, int face, fx_q16_t tol_g,
+                   fx_q16_t *dev_g);
 
 #ifdef __cplusplus
 }

@@ -52,7 +52,8 @@ enum fmx_fault {
     FMX_STUCK_BIT,     /* data bit `bit` of the slope-axis register reads 1 from the onset */
     FMX_REC_TORN,      /* the record's last program unit not written (power loss) */
     FMX_REC_CORRUPT,   /* one bit of the stored record flipped */
-    FMX_REC_OFFSET,    /* a record with a correct CRC whose slope-axis offset is off by amp g */
+    FMX_REC_OFFSET,    /* the station wrote a record (correct CRC) whose slope-axis offset is off
+                          by amp g; the end-of-line verification (app_eol_verify) runs on it */
     FMX_REC_FOREIGN,   /* records bound to another part in both slots, correct CRC (ADIS: serial
                           + 1; SCA3000, which has no serial: revision + 1) */
     FMX_SUPPLY,        /* supply at amp V from the onset */
@@ -77,6 +78,7 @@ struct fmx_setup {
     struct app_cfg cfg;            /* with the budget the end of line derived */
     struct epb_rig_vehicle veh;    /* the parked car */
     uint32_t blocks;               /* estimates per case */
+    bool eol_verify;               /* the station verifies the record (app_eol_verify) */
     struct calrec rec;             /* the good record (as saved) */
     uint8_t flash[2048];           /* the flash image after the end of line */
 };
@@ -85,6 +87,9 @@ struct fmx_result {
     int init_status;    /* epb_rig_power_up's status */
     int cal_status;     /* the application's calstore status (0: calibrated) */
     int inject_status;  /* sim_part_inject's status (INC_ERR_UNSUPPORTED: not modelled) */
+    int eol_status;     /* FMX_NONE, FMX_REC_OFFSET: the end-of-line verification's status
+                           (INC_ERR_RANGE: the station rejected the unit); else 0 */
+    double eol_dev_g;   /* its largest deviation over the six faces */
     bool detected;
     uint32_t latency;   /* samples, see above */
     uint32_t estimates; /* estimates ending after the onset */
@@ -103,6 +108,10 @@ const char *fmx_fault_name(enum fmx_fault f);
 /* After an end of line on the rig (the record saved by app_eol_save): keep its flash image and
  * the record in s (the other fields are the caller's). */
 void fmx_capture(const struct epb_rig *r, const struct calrec *rec, struct fmx_setup *s);
+
+/* Tolerance of the end-of-line verification: the calibrated faces within 5 mg of +-1 g (the
+ * good record's residuals and the 1 s face noise stay below 3 mg on the simulated parts). */
+#define FMX_EOL_VERIFY_TOL_G 0.005
 
 /* Run one case on the process's rig (epb_rig_instance()). 0, or a set-up error of the rig. */
 int fmx_run(const struct fmx_setup *s, const struct fmx_case *c, struct fmx_result *out);
