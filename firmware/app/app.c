@@ -99,6 +99,10 @@ int app_cfg_default(struct app_cfg *c, uint32_t rate_mhz)
     c->temp_margin_c = FX_Q16_ONE;
     c->max_sensor_errors = 0u;
     c->noise_floor_g = (fx_q16_t)(c->budget.noise_sigma_g / APP_QUIET_DIV);
+    c->temp_min_c = FX_Q16_INT(APP_TEMP_MIN_C);
+    c->temp_max_c = FX_Q16_INT(APP_TEMP_MAX_C);
+    c->temp_step_max_c = FX_Q16_INT(APP_TEMP_STEP_MAX_C);
+    c->temp_ref_tol_c = FX_Q16_INT(APP_TEMP_REF_TOL_C);
     c->rec_offset_max_g = MG(APP_REC_OFFSET_MAX_MG);
     c->rec_gain_tol = (fx_q30_t)(((int64_t)APP_REC_GAIN_TOL_PPM << 30) / 1000000);
     c->rec_misalign_max = (fx_q30_t)(((int64_t)APP_REC_MISALIGN_MAX_URAD << 30) / 1000000);
@@ -116,6 +120,7 @@ int app_cfg_check(const struct app_cfg *cfg)
         cfg->still.window > STILL_WINDOW_MAX || cfg->avg_n % cfg->still.window != 0u ||
         cfg->temp_step_c <= 0 || cfg->temp_margin_c < 0 || cfg->noise_floor_g < 0 ||
         cfg->rec_offset_max_g < 0 || cfg->rec_gain_tol < 0 || cfg->rec_misalign_max < 0 ||
+        cfg->temp_min_c > cfg->temp_max_c || cfg->temp_step_max_c < 0 || cfg->temp_ref_tol_c < 0 ||
         !budget_ok(&cfg->budget)) {
         return INC_ERR_INVAL;
     }
@@ -230,6 +235,8 @@ int app_init(struct app *a, const struct app_cfg *cfg, const struct sensor *sens
     (void)cal_gyro_init(&a->gyro, a->rec.valid ? &a->rec : NULL);
     a->temp_set = false;
     a->temp_applied = cfg->temp_default_c;
+    a->temp_prev_set = false;
+    a->temp_ref_set = false;
     block_reset(a);
     offset_ref_reset(a);
     a->ready = true;
@@ -242,6 +249,32 @@ static void offset_ref_reset(struct app *a)
     a->offset_fault = false;
     a->ref_noise_g = 0;
     a->ref_a[0] = a->ref_a[1] = a->ref_a[2] = 0;
+}
+
+void app_set_temp_ref(struct app *a, fx_q16_t t_c, bool valid)
+{
+    if (a != NULL) {
+        a->temp_ref_set = valid;
+        a->temp_ref_c = t_c;
+    }
+}
+
+/* The temperature plausibility of a block with a temperature (app.h). */
+static bool temp_plausible(struct app *a, fx_q16_t t)
+{
+    const struct app_cfg *c = &a->cfg;
+    bool ok = t >= c->temp_min_c && t <= c->temp_max_c;
+    if (c->temp_step_max_c > 0 && a->temp_prev_set &&
+        abs64((int64_t)t - a->temp_prev_c) > c->temp_step_max_c) {
+        ok = false;
+    }
+    if (c->temp_ref_tol_c > 0 && a->temp_ref_set &&
+        abs64((int64_t)t - a->temp_ref_c) > c->temp_ref_tol_c) {
+        ok = false;
+    }
+    a->temp_prev_set = true;
+    a->temp_prev_c = t;
+    return ok;
 }
 
 bool app_calibrated(const struct app *a)
@@ -308,8 +341,8 @@ static void offset_check(struct app *a, struct app_result *res, bool still_cal)
     }
     if (still_cal && !a->offset_fault) {
         if (!a->ref_set) {
-            if (res->slope.valid && (res->flags & (APP_F_SENSOR | APP_F_SATURATED | APP_F_QUIET)) ==
-                                        0u) {
+            if (res->slope.valid && (res->flags & (APP_F_SENSOR | APP_F_SATURATED | APP_F_QUIET |
+                                                   APP_F_TEMP_IMPLAUSIBLE)) == 0u) {
                 for (i = 0; i < 3u; i++) {
                     a->ref_a[i] = res->accel_g[i];
                 }
@@ -397,10 +430,11 @@ static void finish_block(struct app *a, struct app_result *res)
     if (!off_comp || !scale_comp) res->flags |= APP_F_TEMP_UNCOMP;
     if (a->errors > a->cfg.max_sensor_errors) res->flags |= APP_F_SENSOR;
     if (!in.still) res->flags |= APP_F_NOT_STILL;
+    if (t_have && !temp_plausible(a, t_mean)) res->flags |= APP_F_TEMP_IMPLAUSIBLE;
     offset_check(a, res, cal && in.still);
     res->valid = res->slope.valid &&
-                 (res->flags & (APP_F_SENSOR | APP_F_SATURATED | APP_F_QUIET | APP_F_OFFSET_STEP)) ==
-                     0u;
+                 (res->flags & (APP_F_SENSOR | APP_F_SATURATED | APP_F_QUIET | APP_F_OFFSET_STEP |
+                                APP_F_TEMP_IMPLAUSIBLE)) == 0u;
 }
 
 /* ---- Per sample --------------------------------------------------------------------------------- */

@@ -231,6 +231,10 @@ int fmx_run(const struct fmx_setup *s, const struct fmx_case *c, struct fmx_resu
     }
     out->init_status = epb_rig_power_up(r, &s->cfg);
     out->cal_status = r->app.cal_status;
+    if (s->temp_ref && out->init_status == INC_OK) {
+        /* the ECU's board temperature sensor: the car's temperature */
+        app_set_temp_ref(&r->app, (fx_q16_t)lround(veh.temp_c * 65536.0), true);
+    }
     if (out->init_status != INC_OK || (out->cal_status != INC_OK && c->fault != FMX_NONE)) {
         out->detected = true; /* refused at the power-up: never a valid estimate */
         out->latency = 0;

@@ -175,6 +175,7 @@ static void cfg_small(void)
     cfg.avg_n = 64u;
     cfg.noise_floor_g = 0;        /* scripted samples are noiseless (test_noise_floor) */
     cfg.budget.offset_drift_g = 0; /* nor do they age (test_offset_change) */
+    cfg.temp_step_max_c = 0;       /* and their temperature jumps (test_temp_plausibility) */
 }
 
 /* Run one block of scripted samples through app_step. */
@@ -712,6 +713,71 @@ static void test_eol_verify(void)
     CHECK_ERR(app_eol_verify(&app, &f, CAL_FACE_XP, G(5), NULL), INC_ERR_NOT_CALIBRATED);
 }
 
+/* The temperature plausibility: range, rate, second source. */
+static void test_temp_plausibility(void)
+{
+    struct app_result r;
+    struct calrec rec;
+    struct app_cfg d;
+    REQUIRE(app_cfg_default(&d, 819200u) == INC_OK);
+    CHECK_EQ_INT(d.temp_min_c, FX_Q16_INT(-45));
+    CHECK_EQ_INT(d.temp_max_c, FX_Q16_INT(130));
+    CHECK_EQ_INT(d.temp_step_max_c, FX_Q16_INT(2));
+    CHECK_EQ_INT(d.temp_ref_tol_c, FX_Q16_INT(15));
+    script_reset();
+    cfg_small();
+    cfg.temp_step_max_c = d.temp_step_max_c;
+    store_reset();
+    make_record(&rec, true);
+    REQUIRE(calstore_save(&store, &rec, NULL) == INC_OK);
+    REQUIRE(app_init(&app, &cfg, &sensor, &store) == INC_OK);
+    REQUIRE(run_block(&r) == INC_OK);
+    CHECK(r.valid);
+    CHECK_EQ_HEX(r.flags & APP_F_TEMP_IMPLAUSIBLE, 0u);
+    /* +2 degC in a block: at the limit */
+    sc.s.temp_c += FX_Q16_INT(2);
+    REQUIRE(run_block(&r) == INC_OK);
+    CHECK(r.valid);
+    /* +2.5 degC: faster than a die warms */
+    sc.s.temp_c += FX_Q16_INT(2) + FX_Q16_HALF;
+    REQUIRE(run_block(&r) == INC_OK);
+    CHECK(!r.valid);
+    CHECK((r.flags & APP_F_TEMP_IMPLAUSIBLE) != 0u);
+    /* steady again: plausible (not latched) */
+    REQUIRE(run_block(&r) == INC_OK);
+    CHECK(r.valid);
+    /* the second source: 29.5 degC read, the board at 14.5 (15 off: at the limit), then 14 */
+    app_set_temp_ref(&app, FX_Q16_INT(14) + FX_Q16_HALF, true);
+    REQUIRE(run_block(&r) == INC_OK);
+    CHECK(r.valid);
+    app_set_temp_ref(&app, FX_Q16_INT(14), true);
+    REQUIRE(run_block(&r) == INC_OK);
+    CHECK(!r.valid);
+    CHECK((r.flags & APP_F_TEMP_IMPLAUSIBLE) != 0u);
+    app_set_temp_ref(&app, 0, false); /* none fitted */
+    REQUIRE(run_block(&r) == INC_OK);
+    CHECK(r.valid);
+    /* the range, on a fresh instance (no previous block) */
+    sc.s.temp_c = FX_Q16_INT(131);
+    REQUIRE(app_init(&app, &cfg, &sensor, &store) == INC_OK);
+    REQUIRE(run_block(&r) == INC_OK);
+    CHECK((r.flags & APP_F_TEMP_IMPLAUSIBLE) != 0u);
+    CHECK(!r.valid);
+    sc.s.temp_c = FX_Q16_INT(-46);
+    REQUIRE(app_init(&app, &cfg, &sensor, &store) == INC_OK);
+    REQUIRE(run_block(&r) == INC_OK);
+    CHECK((r.flags & APP_F_TEMP_IMPLAUSIBLE) != 0u);
+    /* a part without temperature output: nothing to check */
+    sc.s.flags &= ~SENSOR_S_HAVE_TEMP;
+    REQUIRE(app_init(&app, &cfg, &sensor, &store) == INC_OK);
+    REQUIRE(run_block(&r) == INC_OK);
+    CHECK_EQ_HEX(r.flags & APP_F_TEMP_IMPLAUSIBLE, 0u);
+    sc.s.flags |= SENSOR_S_HAVE_TEMP;
+    sc.s.temp_c = FX_Q16_INT(25);
+    cfg.temp_min_c = FX_Q16_INT(140); /* above temp_max_c */
+    CHECK_ERR(app_cfg_check(&cfg), INC_ERR_INVAL);
+}
+
 static void test_eol(void)
 {
     static const int32_t one = FX_Q16_ONE;
@@ -806,6 +872,7 @@ int main(void)
     UNIT_RUN(test_offset_change);
     UNIT_RUN(test_record_plausibility);
     UNIT_RUN(test_eol_verify);
+    UNIT_RUN(test_temp_plausibility);
     UNIT_RUN(test_eol);
     return unit_report();
 }

@@ -105,12 +105,15 @@ int eol(enum epb_rig_part part, const sim_calpart_params &type, uint64_t seed, b
     cfg.budget = bud.b;
     cfg.noise_floor_g = bud.b.noise_sigma_g / APP_QUIET_DIV; // the part's rated noise floor
     s.eol_verify = !baseline;
+    s.temp_ref = !baseline;
     if (baseline) { // the diagnostics of the fault matrix off: the figure before them
         cfg.noise_floor_g = 0;
         cfg.budget.offset_drift_g = 0;
         cfg.rec_offset_max_g = 0;
         cfg.rec_gain_tol = 0;
         cfg.rec_misalign_max = 0;
+        cfg.temp_step_max_c = 0;
+        cfg.temp_ref_tol_c = 0;
     }
     s.part = part;
     s.type = type;

@@ -108,6 +108,13 @@ struct app_cfg {
     fx_q16_t rec_offset_max_g; /* |acc_offset| per axis */
     fx_q30_t rec_gain_tol;     /* |acc_gain - 1| per axis */
     fx_q30_t rec_misalign_max; /* |off-diagonal acc_misalign| */
+    /* Plausibility of the part's temperature (APP_F_TEMP_IMPLAUSIBLE), per block of a part with
+     * a temperature output: the block mean outside [temp_min_c, temp_max_c]; a change of more
+     * than temp_step_max_c since the previous block; more than temp_ref_tol_c from the second
+     * source (app_set_temp_ref) when one is fitted. temp_step_max_c, temp_ref_tol_c 0: off. */
+    fx_q16_t temp_min_c, temp_max_c;
+    fx_q16_t temp_step_max_c;
+    fx_q16_t temp_ref_tol_c;
 };
 
 /* Why an application result is not valid, besides the slope flags (app_result.flags). */
@@ -133,6 +140,21 @@ struct app_cfg {
  * an integrator sets noise_floor_g = rated / APP_QUIET_DIV for the part it fits.
  */
 #define APP_QUIET_DIV 4
+
+#define APP_F_TEMP_IMPLAUSIBLE 0x80u /* the part's temperature out of range, changing faster
+                                        than a die can, or disagreeing with the second source */
+/*
+ * Defaults of the temperature plausibility (app_cfg_default), degC: the automotive range with
+ * 5 degC of margin (-45..+130: the SCA3000's and ADIS1640x's own ranges are not confirmed here);
+ * 2 degC per block (0.8 degC/s at 2.5 s blocks: a module in a parked car warms or cools by
+ * degrees per minute, a stuck or broken sensor jumps); 15 degC between the die and the ECU's
+ * board sensor (self-heating and the board's gradient are a few degC; the reading stuck at
+ * 25 degC in a car at -20 degC is 45 off).
+ */
+#define APP_TEMP_MIN_C (-45)
+#define APP_TEMP_MAX_C 130
+#define APP_TEMP_STEP_MAX_C 2
+#define APP_TEMP_REF_TOL_C 15
 
 #define APP_F_OFFSET_STEP 0x40u /* the offset-change check: since the reference block the
                                    slope- or gravity-axis mean moved by more than the bound's
@@ -192,6 +214,10 @@ struct app {
     bool offset_fault;     /* APP_F_OFFSET_STEP latched */
     fx_q16_t ref_a[3];     /* reference block means, Q16 g */
     fx_q16_t ref_noise_g;  /* its noise term k sigma / sqrt(N), Q16 g */
+    bool temp_prev_set;    /* a previous block's mean temperature is known */
+    fx_q16_t temp_prev_c;
+    bool temp_ref_set;     /* the second temperature source (app_set_temp_ref) */
+    fx_q16_t temp_ref_c;
     int cal_status;        /* calstore_load status */
     bool temp_set;         /* the models were evaluated at least once */
     fx_q16_t temp_applied; /* temperature of that evaluation */
@@ -261,6 +287,10 @@ int app_step(struct app *a, const struct sensor_sample *s, int read_err, struct 
  * error.
  */
 int app_measure(struct app *a, struct app_result *res);
+
+/* The second temperature source (e.g. the ECU's board sensor), degC Q16, for the plausibility
+ * check of the blocks that end from now on; valid false: none fitted (the default). */
+void app_set_temp_ref(struct app *a, fx_q16_t t_c, bool valid);
 
 /* Drop the block in progress and restart the stillness windows (e.g. after the vehicle moved). */
 void app_restart(struct app *a);

@@ -79,6 +79,8 @@ struct fmx_setup {
     struct epb_rig_vehicle veh;    /* the parked car */
     uint32_t blocks;               /* estimates per case */
     bool eol_verify;               /* the station verifies the record (app_eol_verify) */
+    bool temp_ref;                 /* a second temperature source is fitted (the ECU's board
+                                      sensor, reading the car's temperature) */
     struct calrec rec;             /* the good record (as saved) */
     uint8_t flash[2048];           /* the flash image after the end of line */
 };
