@@ -35,11 +35,11 @@ _Static_assert((int)SENSOR_FAMILY_ADIS163XX == (int)CALREC_FAMILY_ADIS163XX, "fa
 static bool budget_ok(const struct app_budget *b)
 {
     return b->sensitivity >= 0 && b->sensitivity < FX_Q30_HALF && b->offset_g >= 0 &&
-           b->offset_drift_g >= 0 &&
-           b->nonlinearity_g >= 0 && b->temp_comp_g >= 0 && b->temp_uncomp_g >= 0 &&
-           b->sensitivity_uncal >= 0 && b->sensitivity_uncal < FX_Q30_HALF &&
-           b->tscale_uncomp >= 0 && b->tscale_uncomp < FX_Q30_HALF && b->offset_uncal_g >= 0 &&
-           b->noise_sigma_g >= 0 && b->lifetime_runs >= 1u && b->exceed_expected > 0;
+           b->offset_drift_g >= 0 && b->nonlinearity_g >= 0 && b->temp_comp_g >= 0 &&
+           b->temp_uncomp_g >= 0 && b->sensitivity_uncal >= 0 &&
+           b->sensitivity_uncal < FX_Q30_HALF && b->tscale_uncomp >= 0 &&
+           b->tscale_uncomp < FX_Q30_HALF && b->offset_uncal_g >= 0 && b->noise_sigma_g >= 0 &&
+           b->lifetime_runs >= 1u && b->exceed_expected > 0;
 }
 
 /* Q16 of milli-g, for the constants below. */

@@ -9,11 +9,10 @@
 #include "inclino/sim/part.h"
 
 static const char *const names[FMX_FAULTS] = {
-    "none",         "stuck_output", "frozen",        "bias_acc",     "bias_gyro",
-    "noise_burst",  "saturation",   "drift",         "miso_high",    "miso_low",
-    "bit_flip",     "corrupt_frame", "missed_dr",    "device_error", "wrong_id",
-    "stuck_bit",    "rec_torn",     "rec_corrupt",   "rec_offset",   "rec_foreign",
-    "supply",       "temp_stuck",   "temp_range"};
+    "none",       "stuck_output", "frozen",    "bias_acc",   "bias_gyro", "noise_burst",
+    "saturation", "drift",        "miso_high", "miso_low",   "bit_flip",  "corrupt_frame",
+    "missed_dr",  "device_error", "wrong_id",  "stuck_bit",  "rec_torn",  "rec_corrupt",
+    "rec_offset", "rec_foreign",  "supply",    "temp_stuck", "temp_range"};
 
 const char *fmx_fault_name(enum fmx_fault f)
 {
@@ -78,9 +77,7 @@ static int record_fault(struct epb_rig *r, const struct fmx_setup *s, const stru
         memset(&r->flash_mem[600], CALSTORE_ERASED, 1024u - 600u);
         return INC_OK;
     case FMX_REC_CORRUPT: r->flash_mem[100] ^= 0x10u; return INC_OK;
-    case FMX_REC_OFFSET:
-        rec.acc_offset[0] += (int32_t)lround(c->amp * 65536.0);
-        break;
+    case FMX_REC_OFFSET: rec.acc_offset[0] += (int32_t)lround(c->amp * 65536.0); break;
     case FMX_REC_FOREIGN:
         if (r->info->adis) {
             rec.binding.serial = (rec.binding.serial + 1u) & 0xFFFFu;
@@ -97,7 +94,8 @@ static int record_fault(struct epb_rig *r, const struct fmx_setup *s, const stru
     }
     err = calstore_save(&r->store, &rec, &info);
     if (err == INC_OK && c->fault == FMX_REC_FOREIGN) {
-        err = calstore_save(&r->store, &rec, &info); /* both slots: no older record to fall back on */
+        err = calstore_save(&r->store, &rec,
+                            &info); /* both slots: no older record to fall back on */
     }
     return err;
 }

@@ -173,7 +173,7 @@ static void cfg_small(void)
     REQUIRE(app_cfg_default(&cfg, 819200u) == INC_OK);
     cfg.still.window = 16u;
     cfg.avg_n = 64u;
-    cfg.noise_floor_g = 0;        /* scripted samples are noiseless (test_noise_floor) */
+    cfg.noise_floor_g = 0;         /* scripted samples are noiseless (test_noise_floor) */
     cfg.budget.offset_drift_g = 0; /* nor do they age (test_offset_change) */
     cfg.temp_step_max_c = 0;       /* and their temperature jumps (test_temp_plausibility) */
 }
@@ -522,7 +522,7 @@ static void test_noise_floor(void)
     CHECK((r.flags & APP_F_QUIET) != 0u);
     CHECK(!r.valid);
     sc.wobble_x = sc.wobble_yz = 0;
-    cfg.noise_floor_g = 0;                /* 0: no check */
+    cfg.noise_floor_g = 0; /* 0: no check */
     REQUIRE(app_init(&app, &cfg, &sensor, &store) == INC_OK);
     REQUIRE(run_block(&r) == INC_OK);
     CHECK((r.flags & APP_F_QUIET) == 0u);
@@ -622,8 +622,8 @@ static void test_record_plausibility(void)
     script_reset();
     REQUIRE(app_cfg_default(&d, 819200u) == INC_OK);
     CHECK_EQ_INT(d.rec_offset_max_g, G(100));
-    CHECK_EQ_INT(d.rec_gain_tol, 107374182);     /* 0.1 in Q30 */
-    CHECK_EQ_INT(d.rec_misalign_max, 37580963);  /* 0.035 in Q30 */
+    CHECK_EQ_INT(d.rec_gain_tol, 107374182);    /* 0.1 in Q30 */
+    CHECK_EQ_INT(d.rec_misalign_max, 37580963); /* 0.035 in Q30 */
     cfg_small();
     /* at the limits: loaded */
     store_reset();

@@ -83,8 +83,8 @@ int eol(enum epb_rig_part part, const sim_calpart_params &type, uint64_t seed, b
                     sp.dir[a == 2 ? 0 : 2] = std::cos(th);
                     epb_rig_station_dir(rig, sp.dir.data(), t);
                     epb_rig_wait(rig, 0.2);
-                    err = app_eol_face(epb_rig_app(rig), n_face, FX_Q16_INT(1) / 20,
-                                       FX_Q16_INT(2), &sp.meas);
+                    err = app_eol_face(epb_rig_app(rig), n_face, FX_Q16_INT(1) / 20, FX_Q16_INT(2),
+                                       &sp.meas);
                     if (err != INC_OK) return err;
                     sk.sweep.push_back(sp);
                 }
@@ -202,14 +202,14 @@ bool unum(const char *s, uint64_t &out)
 
 void usage()
 {
-    std::fprintf(stderr,
-                 "usage: fault_matrix [--full] [--baseline] [--csv FILE] [--seed N] [--blocks N]\n"
-                 "  --full       every amplitude and onset (default: the short matrix of CI)\n"
-                 "  --baseline   the matrix's diagnostics off (noise floor, offset-change term and\n"
-                 "               check, record plausibility, end-of-line verification)\n"
-                 "  --csv FILE   one row per case\n"
-                 "  --seed N     noise and vibration seed (default 1)\n"
-                 "  --blocks N   estimates per case, 2..100 (default 5: 12.5 s parked)\n");
+    std::fprintf(
+        stderr, "usage: fault_matrix [--full] [--baseline] [--csv FILE] [--seed N] [--blocks N]\n"
+                "  --full       every amplitude and onset (default: the short matrix of CI)\n"
+                "  --baseline   the matrix's diagnostics off (noise floor, offset-change term and\n"
+                "               check, record plausibility, end-of-line verification)\n"
+                "  --csv FILE   one row per case\n"
+                "  --seed N     noise and vibration seed (default 1)\n"
+                "  --blocks N   estimates per case, 2..100 (default 5: 12.5 s parked)\n");
 }
 
 } // namespace
@@ -256,9 +256,11 @@ int main(int argc, char **argv)
             std::fprintf(stderr, "fault_matrix: cannot write %s\n", csv_path.c_str());
             return tool_summary_error("io", 2);
         }
-        std::fprintf(csv, "part,fault,amp,onset_s,bit,slope_step_deg,modelled,init,cal,detected,latency_samples,"
-                          "latency_limit,estimates,valid,valid_wrong,read_errors,fault_word,"
-                          "max_err_deg,bound_deg,eol_verify,eol_dev_mg,verdict\n");
+        std::fprintf(
+            csv,
+            "part,fault,amp,onset_s,bit,slope_step_deg,modelled,init,cal,detected,latency_samples,"
+            "latency_limit,estimates,valid,valid_wrong,read_errors,fault_word,"
+            "max_err_deg,bound_deg,eol_verify,eol_dev_mg,verdict\n");
     }
     const std::vector<Case> cases = matrix(full);
     fmx_setup setups[EPB_RIG_PARTS];
@@ -282,8 +284,8 @@ int main(int argc, char **argv)
         fmx_result r;
         const int err = fmx_run(&s, &k.c, &r);
         if (err != INC_OK) {
-            std::fprintf(stderr, "fault_matrix: case %s failed (%s)\n",
-                         fmx_fault_name(k.c.fault), inc_err_name(err));
+            std::fprintf(stderr, "fault_matrix: case %s failed (%s)\n", fmx_fault_name(k.c.fault),
+                         inc_err_name(err));
             return tool_summary_error(inc_err_name(err), 2);
         }
         const bool modelled = r.inject_status != INC_ERR_UNSUPPORTED;
@@ -299,12 +301,13 @@ int main(int argc, char **argv)
                 vw_estimates += r.valid_wrong;
             }
             if (k.c.fault == FMX_NONE) {
-            if (r.eol_status != INC_OK) eol_false++;
+                if (r.eol_status != INC_OK) eol_false++;
                 if (r.detected) false_alarms++;
                 verdict = r.detected ? "false-alarm" : (r.valid_wrong ? "VALID-WRONG" : "ok");
             } else if (r.detected && r.latency <= lim) {
                 detected++;
-                if (r.latency == 0 && (r.init_status != 0 || r.cal_status != 0 || r.eol_status != 0))
+                if (r.latency == 0 &&
+                    (r.init_status != 0 || r.cal_status != 0 || r.eol_status != 0))
                     refused++;
                 verdict = r.valid_wrong ? "VALID-WRONG" : "detected";
             } else if (r.detected && r.valid_wrong == 0) {
@@ -322,21 +325,23 @@ int main(int argc, char **argv)
         }
         const char *pname = epb_rig_part_get(k.part)->name;
         if (csv != nullptr) {
-            std::fprintf(csv, "%s,%s,%g,%g,%u,%g,%d,%s,%s,%d,%ld,%u,%u,%u,%u,%u,0x%06x,%.4f,%.4f,%s,%.3f,%s\n",
-                         pname, fmx_fault_name(k.c.fault), k.c.amp, k.c.onset_s, k.c.bit,
-                         k.c.slope_step_deg, modelled ? 1 : 0, inc_err_name(r.init_status), inc_err_name(r.cal_status),
-                         r.detected ? 1 : 0,
-                         r.latency == UINT32_MAX ? -1L : static_cast<long>(r.latency), lim,
-                         r.estimates, r.valid, r.valid_wrong, r.read_errors, r.fault_word,
-                         r.max_err_deg, r.bound_deg, inc_err_name(r.eol_status),
-                         r.eol_dev_g * 1e3, verdict.c_str());
+            std::fprintf(
+                csv,
+                "%s,%s,%g,%g,%u,%g,%d,%s,%s,%d,%ld,%u,%u,%u,%u,%u,0x%06x,%.4f,%.4f,%s,%.3f,%s\n",
+                pname, fmx_fault_name(k.c.fault), k.c.amp, k.c.onset_s, k.c.bit, k.c.slope_step_deg,
+                modelled ? 1 : 0, inc_err_name(r.init_status), inc_err_name(r.cal_status),
+                r.detected ? 1 : 0, r.latency == UINT32_MAX ? -1L : static_cast<long>(r.latency),
+                lim, r.estimates, r.valid, r.valid_wrong, r.read_errors, r.fault_word,
+                r.max_err_deg, r.bound_deg, inc_err_name(r.eol_status), r.eol_dev_g * 1e3,
+                verdict.c_str());
         }
-        std::printf("%-11s %-13s amp %-7g onset %-4g bit %-2u step %-7g %-12s det %d lat %6ld  valid %u/%u "
-                    "wrong %u  word 0x%06x  max|err| %.3f bound %.3f\n",
-                    pname, fmx_fault_name(k.c.fault), k.c.amp, k.c.onset_s, k.c.bit,
-                    k.c.slope_step_deg, verdict.c_str(), r.detected ? 1 : 0,
-                    r.latency == UINT32_MAX ? -1L : static_cast<long>(r.latency), r.valid,
-                    r.estimates, r.valid_wrong, r.fault_word, r.max_err_deg, r.bound_deg);
+        std::printf(
+            "%-11s %-13s amp %-7g onset %-4g bit %-2u step %-7g %-12s det %d lat %6ld  valid %u/%u "
+            "wrong %u  word 0x%06x  max|err| %.3f bound %.3f\n",
+            pname, fmx_fault_name(k.c.fault), k.c.amp, k.c.onset_s, k.c.bit, k.c.slope_step_deg,
+            verdict.c_str(), r.detected ? 1 : 0,
+            r.latency == UINT32_MAX ? -1L : static_cast<long>(r.latency), r.valid, r.estimates,
+            r.valid_wrong, r.fault_word, r.max_err_deg, r.bound_deg);
     }
     if (csv != nullptr && (std::ferror(csv) != 0 || std::fclose(csv) != 0)) {
         std::fprintf(stderr, "fault_matrix: write error %s\n", csv_path.c_str());

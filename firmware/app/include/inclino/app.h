@@ -127,7 +127,8 @@ struct app_cfg {
 #define APP_F_NOT_STILL \
     0x10u /* a stillness window of the block was not quiet, or the
                                       detector was not at rest at its end */
-#define APP_F_QUIET 0x20u /* an accelerometer axis was quieter than the part's noise floor over a
+#define APP_F_QUIET \
+    0x20u /* an accelerometer axis was quieter than the part's noise floor over a
                              stillness window: frozen or stuck output (never valid) */
 
 /*
@@ -141,7 +142,8 @@ struct app_cfg {
  */
 #define APP_QUIET_DIV 4
 
-#define APP_F_TEMP_IMPLAUSIBLE 0x80u /* the part's temperature out of range, changing faster
+#define APP_F_TEMP_IMPLAUSIBLE \
+    0x80u /* the part's temperature out of range, changing faster
                                         than a die can, or disagreeing with the second source */
 /*
  * Defaults of the temperature plausibility (app_cfg_default), degC: the automotive range with
@@ -156,7 +158,8 @@ struct app_cfg {
 #define APP_TEMP_STEP_MAX_C 2
 #define APP_TEMP_REF_TOL_C 15
 
-#define APP_F_OFFSET_STEP 0x40u /* the offset-change check: since the reference block the
+#define APP_F_OFFSET_STEP \
+    0x40u /* the offset-change check: since the reference block the
                                    slope- or gravity-axis mean moved by more than the bound's
                                    offset-change term allows (a bias jump, a drift, a stuck bit);
                                    latched until app_restart or app_init */
@@ -209,14 +212,14 @@ struct app {
     struct cal_acc acc;
     struct cal_gyro gyro;
     struct still still;
-    fx_q16_t k_sigma;      /* noise factor from the lifetime exceedance rule */
-    bool ref_set;          /* the offset-change check's reference is taken */
-    bool offset_fault;     /* APP_F_OFFSET_STEP latched */
-    fx_q16_t ref_a[3];     /* reference block means, Q16 g */
-    fx_q16_t ref_noise_g;  /* its noise term k sigma / sqrt(N), Q16 g */
-    bool temp_prev_set;    /* a previous block's mean temperature is known */
+    fx_q16_t k_sigma;     /* noise factor from the lifetime exceedance rule */
+    bool ref_set;         /* the offset-change check's reference is taken */
+    bool offset_fault;    /* APP_F_OFFSET_STEP latched */
+    fx_q16_t ref_a[3];    /* reference block means, Q16 g */
+    fx_q16_t ref_noise_g; /* its noise term k sigma / sqrt(N), Q16 g */
+    bool temp_prev_set;   /* a previous block's mean temperature is known */
     fx_q16_t temp_prev_c;
-    bool temp_ref_set;     /* the second temperature source (app_set_temp_ref) */
+    bool temp_ref_set; /* the second temperature source (app_set_temp_ref) */
     fx_q16_t temp_ref_c;
     int cal_status;        /* calstore_load status */
     bool temp_set;         /* the models were evaluated at least once */

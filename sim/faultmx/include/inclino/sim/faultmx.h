@@ -64,9 +64,9 @@ enum fmx_fault {
 
 struct fmx_case {
     enum fmx_fault fault;
-    double amp;     /* the fault's amplitude (unit of the fault above) */
-    double onset_s; /* after the first sample of the measurement */
-    uint8_t bit;    /* FMX_BIT_FLIP, FMX_STUCK_BIT */
+    double amp;            /* the fault's amplitude (unit of the fault above) */
+    double onset_s;        /* after the first sample of the measurement */
+    uint8_t bit;           /* FMX_BIT_FLIP, FMX_STUCK_BIT */
     double slope_step_deg; /* the true slope changes by this 1 s after the onset (0: never), e.g.
                               the car lifted or towed while the output is frozen */
 };
@@ -75,32 +75,32 @@ struct fmx_setup {
     enum epb_rig_part part;
     struct sim_calpart_params type; /* the part's errors */
     uint64_t seed;
-    struct app_cfg cfg;            /* with the budget the end of line derived */
-    struct epb_rig_vehicle veh;    /* the parked car */
-    uint32_t blocks;               /* estimates per case */
-    bool eol_verify;               /* the station verifies the record (app_eol_verify) */
-    bool temp_ref;                 /* a second temperature source is fitted (the ECU's board
+    struct app_cfg cfg;         /* with the budget the end of line derived */
+    struct epb_rig_vehicle veh; /* the parked car */
+    uint32_t blocks;            /* estimates per case */
+    bool eol_verify;            /* the station verifies the record (app_eol_verify) */
+    bool temp_ref;              /* a second temperature source is fitted (the ECU's board
                                       sensor, reading the car's temperature) */
-    struct calrec rec;             /* the good record (as saved) */
-    uint8_t flash[2048];           /* the flash image after the end of line */
+    struct calrec rec;          /* the good record (as saved) */
+    uint8_t flash[2048];        /* the flash image after the end of line */
 };
 
 struct fmx_result {
-    int init_status;    /* epb_rig_power_up's status */
-    int cal_status;     /* the application's calstore status (0: calibrated) */
-    int inject_status;  /* sim_part_inject's status (INC_ERR_UNSUPPORTED: not modelled) */
-    int eol_status;     /* FMX_NONE, FMX_REC_OFFSET: the end-of-line verification's status
+    int init_status;   /* epb_rig_power_up's status */
+    int cal_status;    /* the application's calstore status (0: calibrated) */
+    int inject_status; /* sim_part_inject's status (INC_ERR_UNSUPPORTED: not modelled) */
+    int eol_status;    /* FMX_NONE, FMX_REC_OFFSET: the end-of-line verification's status
                            (INC_ERR_RANGE: the station rejected the unit); else 0 */
-    double eol_dev_g;   /* its largest deviation over the six faces */
+    double eol_dev_g;  /* its largest deviation over the six faces */
     bool detected;
     uint32_t latency;   /* samples, see above */
     uint32_t estimates; /* estimates ending after the onset */
     uint32_t valid;     /* of those, marked valid */
     uint32_t valid_wrong;
     uint32_t read_errors;
-    uint32_t fault_word;  /* OR of app flags | slope flags << 16 over the estimates after onset */
-    double max_err_deg;   /* largest |error| of a valid estimate after the onset */
-    double bound_deg;     /* the bound of that estimate (or of the last one) */
+    uint32_t fault_word; /* OR of app flags | slope flags << 16 over the estimates after onset */
+    double max_err_deg;  /* largest |error| of a valid estimate after the onset */
+    double bound_deg;    /* the bound of that estimate (or of the last one) */
     double true_deg;
 };
 
