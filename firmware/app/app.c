@@ -86,7 +86,7 @@ int app_cfg_default(struct app_cfg *c, uint32_t rate_mhz)
     c->budget.offset_g = 0;
     c->budget.offset_drift_g = MG(10);
     c->budget.nonlinearity_g = MG(10);
-    c->budget.temp_comp_g = MG(10);
+    c->budget.temp_comp_g = 0; /* Table 1's 10 mg is offset_drift_g (app.h) */
     c->budget.temp_uncomp_g = MG(50);
     c->budget.tscale_uncomp = (fx_q30_t)5368709;      /* 0.005 */
     c->budget.sensitivity_uncal = (fx_q30_t)32212255; /* 0.03 */
@@ -335,7 +335,6 @@ static void offset_check(struct app *a, struct app_result *res, bool still_cal)
     const fx_q16_t drift = a->cfg.budget.offset_drift_g;
     const fx_q16_t n = res->slope.noise_g;
     const uint8_t ax[2] = {a->cfg.slope.slope_axis, a->cfg.slope.gravity_axis};
-    unsigned i;
     if (drift == 0) {
         return; /* no ageing term, no check (app.h) */
     }
@@ -343,6 +342,7 @@ static void offset_check(struct app *a, struct app_result *res, bool still_cal)
         if (!a->ref_set) {
             if (res->slope.valid && (res->flags & (APP_F_SENSOR | APP_F_SATURATED | APP_F_QUIET |
                                                    APP_F_TEMP_IMPLAUSIBLE)) == 0u) {
+                unsigned i;
                 for (i = 0; i < 3u; i++) {
                     a->ref_a[i] = res->accel_g[i];
                 }
@@ -351,6 +351,7 @@ static void offset_check(struct app *a, struct app_result *res, bool still_cal)
             }
         } else {
             const int64_t tol = (int64_t)drift - n - a->ref_noise_g;
+            unsigned i;
             for (i = 0; i < 2u; i++) {
                 int64_t d = (int64_t)res->accel_g[ax[i]] - a->ref_a[ax[i]];
                 d = d < 0 ? -d : d;

@@ -20,6 +20,7 @@ extern "C" {
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <numeric>
 #include <string>
 #include <vector>
 
@@ -69,9 +70,9 @@ int eol(enum epb_rig_part part, const sim_calpart_params &type, uint64_t seed, b
             if (err != INC_OK) return err;
         }
         if (pi->temp_lsb_c > 0.0) {
-            double sum = 0.0;
-            for (const app_face &f : sk.faces)
-                sum += f.temp_c / 65536.0;
+            const double sum = std::accumulate(
+                sk.faces.begin(), sk.faces.end(), 0.0,
+                [](double acc, const app_face &f) { return acc + f.temp_c / 65536.0; });
             sk.temp_c = sum / CAL_FACES;
         }
         if (soaks.empty()) {

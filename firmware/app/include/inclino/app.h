@@ -242,7 +242,10 @@ struct app {
  *   two-axis slope (x along the vehicle, nose up = +x; z up), |slope| <= 30 deg, bound <= 2 deg,
  *   magnitude 1 g +- 50 mg;
  *   [ADI-EPB]'s Table 1 as the budget: after calibration sensitivity 0, offset 0, nonlinearity
- *   10 mg, temperature 10 mg (three-point) or 50 mg (none), scale drift 0.5 %; before it 3 % and
+ *   10 mg, total offset change 10 mg after three-point calibration, all of it the stress and
+ *   ageing share that the offset-change term carries (offset_drift_g 10 mg, temp_comp_g 0:
+ *   [ADI-EPB] takes the three-point models to remove the 80 % temperature share of its 50 mg) or
+ *   50 mg without compensation (temp_uncomp_g, on top of the 10 mg term), scale drift 0.5 %; before it 3 % and
  *   15 mg; noise 4 mg per sample ([ADI-EPB]: 0.4 mg after averaging 100); k from M = 200 000
  *   parkings and E = 0.001 (k = 5.9);
  *   temperature 25 degC when the part has none, models re-evaluated every 0.5 degC, a margin of
