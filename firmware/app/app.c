@@ -27,18 +27,19 @@ _Static_assert((int)SENSOR_FAMILY_SCA3000 == (int)CALREC_FAMILY_SCA3000, "family
 _Static_assert((int)SENSOR_FAMILY_ADIS1625X == (int)CALREC_FAMILY_ADIS1625X, "family numbers");
 _Static_assert((int)SENSOR_FAMILY_ADIS163XX == (int)CALREC_FAMILY_ADIS163XX, "family numbers");
 
-/* Internal block flag: every sample so far carried a temperature (bit 8, never reported). */
-#define BLOCK_ALL_TEMP 0x100u
+/* Internal block flag: every sample so far carried a temperature (bit 31, never reported). */
+#define BLOCK_ALL_TEMP 0x80000000u
 
 /* ---- Configuration -------------------------------------------------------------------------- */
 
 static bool budget_ok(const struct app_budget *b)
 {
     return b->sensitivity >= 0 && b->sensitivity < FX_Q30_HALF && b->offset_g >= 0 &&
-           b->nonlinearity_g >= 0 && b->temp_comp_g >= 0 && b->temp_uncomp_g >= 0 &&
-           b->sensitivity_uncal >= 0 && b->sensitivity_uncal < FX_Q30_HALF &&
-           b->tscale_uncomp >= 0 && b->tscale_uncomp < FX_Q30_HALF && b->offset_uncal_g >= 0 &&
-           b->noise_sigma_g >= 0 && b->lifetime_runs >= 1u && b->exceed_expected > 0;
+           b->offset_drift_g >= 0 && b->nonlinearity_g >= 0 && b->temp_comp_g >= 0 &&
+           b->temp_uncomp_g >= 0 && b->sensitivity_uncal >= 0 &&
+           b->sensitivity_uncal < FX_Q30_HALF && b->tscale_uncomp >= 0 &&
+           b->tscale_uncomp < FX_Q30_HALF && b->offset_uncal_g >= 0 && b->noise_sigma_g >= 0 &&
+           b->lifetime_runs >= 1u && b->exceed_expected > 0;
 }
 
 /* Q16 of milli-g, for the constants below. */
@@ -83,8 +84,9 @@ int app_cfg_default(struct app_cfg *c, uint32_t rate_mhz)
     c->slope.budget.k_sigma = FX_Q16_INT(6);
     c->budget.sensitivity = 0;
     c->budget.offset_g = 0;
+    c->budget.offset_drift_g = MG(10);
     c->budget.nonlinearity_g = MG(10);
-    c->budget.temp_comp_g = MG(10);
+    c->budget.temp_comp_g = 0; /* Table 1's 10 mg is offset_drift_g (app.h) */
     c->budget.temp_uncomp_g = MG(50);
     c->budget.tscale_uncomp = (fx_q30_t)5368709;      /* 0.005 */
     c->budget.sensitivity_uncal = (fx_q30_t)32212255; /* 0.03 */
@@ -96,6 +98,14 @@ int app_cfg_default(struct app_cfg *c, uint32_t rate_mhz)
     c->temp_step_c = FX_Q16_HALF;
     c->temp_margin_c = FX_Q16_ONE;
     c->max_sensor_errors = 0u;
+    c->noise_floor_g = (fx_q16_t)(c->budget.noise_sigma_g / APP_QUIET_DIV);
+    c->temp_min_c = FX_Q16_INT(APP_TEMP_MIN_C);
+    c->temp_max_c = FX_Q16_INT(APP_TEMP_MAX_C);
+    c->temp_step_max_c = FX_Q16_INT(APP_TEMP_STEP_MAX_C);
+    c->temp_ref_tol_c = FX_Q16_INT(APP_TEMP_REF_TOL_C);
+    c->rec_offset_max_g = MG(APP_REC_OFFSET_MAX_MG);
+    c->rec_gain_tol = (fx_q30_t)(((int64_t)APP_REC_GAIN_TOL_PPM << 30) / 1000000);
+    c->rec_misalign_max = (fx_q30_t)(((int64_t)APP_REC_MISALIGN_MAX_URAD << 30) / 1000000);
     return INC_OK;
 }
 
@@ -108,7 +118,10 @@ int app_cfg_check(const struct app_cfg *cfg)
     }
     if (cfg->avg_n == 0u || cfg->avg_n > FX_SUM_MAX_COUNT || cfg->still.window < STILL_WINDOW_MIN ||
         cfg->still.window > STILL_WINDOW_MAX || cfg->avg_n % cfg->still.window != 0u ||
-        cfg->temp_step_c <= 0 || cfg->temp_margin_c < 0 || !budget_ok(&cfg->budget)) {
+        cfg->temp_step_c <= 0 || cfg->temp_margin_c < 0 || cfg->noise_floor_g < 0 ||
+        cfg->rec_offset_max_g < 0 || cfg->rec_gain_tol < 0 || cfg->rec_misalign_max < 0 ||
+        cfg->temp_min_c > cfg->temp_max_c || cfg->temp_step_max_c < 0 || cfg->temp_ref_tol_c < 0 ||
+        !budget_ok(&cfg->budget)) {
         return INC_ERR_INVAL;
     }
     if (slope_sigma_factor(cfg->budget.lifetime_runs, cfg->budget.exceed_expected, &k) != INC_OK) {
@@ -117,7 +130,7 @@ int app_cfg_check(const struct app_cfg *cfg)
     /* The slope configuration with a budget of the kind app_step composes. */
     sc = cfg->slope;
     sc.budget.sensitivity = cfg->budget.sensitivity;
-    sc.budget.offset_g = cfg->budget.offset_g;
+    sc.budget.offset_g = fx_add(cfg->budget.offset_g, cfg->budget.offset_drift_g);
     sc.budget.nonlinearity_g = cfg->budget.nonlinearity_g;
     sc.budget.temperature_g = cfg->budget.temp_comp_g;
     sc.budget.noise_sigma_g = cfg->budget.noise_sigma_g;
@@ -126,6 +139,34 @@ int app_cfg_check(const struct app_cfg *cfg)
 }
 
 /* ---- Block bookkeeping ------------------------------------------------------------------------ */
+
+static void offset_ref_reset(struct app *a);
+
+static int64_t abs64(int64_t v)
+{
+    return v < 0 ? -v : v;
+}
+
+/* The record against the part type's limits (app_cfg rec_*; 0: that check off). */
+static bool rec_plausible(const struct app_cfg *c, const struct calrec *r)
+{
+    unsigned i, j;
+    for (i = 0; i < 3u; i++) {
+        if (c->rec_offset_max_g > 0 && abs64(r->acc_offset[i]) > c->rec_offset_max_g) {
+            return false;
+        }
+        if (c->rec_gain_tol > 0 && abs64((int64_t)r->acc_gain[i] - FX_Q30_ONE) > c->rec_gain_tol) {
+            return false;
+        }
+        for (j = 0; j < 3u; j++) {
+            if (i != j && c->rec_misalign_max > 0 &&
+                abs64(r->acc_misalign[i][j]) > c->rec_misalign_max) {
+                return false;
+            }
+        }
+    }
+    return true;
+}
 
 static void block_reset(struct app *a)
 {
@@ -183,6 +224,10 @@ int app_init(struct app *a, const struct app_cfg *cfg, const struct sensor *sens
     calrec_set_default(&a->rec);
     a->cal_status = store != NULL ? calstore_load(store, &a->id, &a->rec, NULL)
                                   : INC_ERR_NOT_CALIBRATED;
+    if (a->cal_status == INC_OK && !rec_plausible(cfg, &a->rec)) {
+        a->cal_status = INC_ERR_RANGE; /* intact, bound to this part, but not of its type */
+        calrec_set_default(&a->rec);
+    }
     err = cal_acc_init(&a->acc, a->rec.valid ? &a->rec : NULL, cfg->temp_default_c);
     if (a->cal_status == INC_OK && err != INC_OK) {
         a->cal_status = err; /* a record that cannot describe this part at any temperature */
@@ -190,9 +235,46 @@ int app_init(struct app *a, const struct app_cfg *cfg, const struct sensor *sens
     (void)cal_gyro_init(&a->gyro, a->rec.valid ? &a->rec : NULL);
     a->temp_set = false;
     a->temp_applied = cfg->temp_default_c;
+    a->temp_prev_set = false;
+    a->temp_ref_set = false;
     block_reset(a);
+    offset_ref_reset(a);
     a->ready = true;
     return INC_OK;
+}
+
+static void offset_ref_reset(struct app *a)
+{
+    a->ref_set = false;
+    a->offset_fault = false;
+    a->ref_noise_g = 0;
+    a->ref_a[0] = a->ref_a[1] = a->ref_a[2] = 0;
+}
+
+void app_set_temp_ref(struct app *a, fx_q16_t t_c, bool valid)
+{
+    if (a != NULL) {
+        a->temp_ref_set = valid;
+        a->temp_ref_c = t_c;
+    }
+}
+
+/* The temperature plausibility of a block with a temperature (app.h). */
+static bool temp_plausible(struct app *a, fx_q16_t t)
+{
+    const struct app_cfg *c = &a->cfg;
+    bool ok = t >= c->temp_min_c && t <= c->temp_max_c;
+    if (c->temp_step_max_c > 0 && a->temp_prev_set &&
+        abs64((int64_t)t - a->temp_prev_c) > c->temp_step_max_c) {
+        ok = false;
+    }
+    if (c->temp_ref_tol_c > 0 && a->temp_ref_set &&
+        abs64((int64_t)t - a->temp_ref_c) > c->temp_ref_tol_c) {
+        ok = false;
+    }
+    a->temp_prev_set = true;
+    a->temp_prev_c = t;
+    return ok;
 }
 
 bool app_calibrated(const struct app *a)
@@ -204,6 +286,7 @@ void app_restart(struct app *a)
 {
     if (a != NULL && a->ready) {
         block_reset(a);
+        offset_ref_reset(a);
     }
 }
 
@@ -244,6 +327,43 @@ static fx_q16_t sigma_from_var(uint64_t var, uint32_t w)
         r++;
     }
     return r > (uint64_t)INT32_MAX ? INT32_MAX : (fx_q16_t)r;
+}
+
+/* The offset-change check (app.h): reference, comparison, latch. */
+static void offset_check(struct app *a, struct app_result *res, bool still_cal)
+{
+    const fx_q16_t drift = a->cfg.budget.offset_drift_g;
+    const fx_q16_t n = res->slope.noise_g;
+    const uint8_t ax[2] = {a->cfg.slope.slope_axis, a->cfg.slope.gravity_axis};
+    if (drift == 0) {
+        return; /* no ageing term, no check (app.h) */
+    }
+    if (still_cal && !a->offset_fault) {
+        if (!a->ref_set) {
+            if (res->slope.valid && (res->flags & (APP_F_SENSOR | APP_F_SATURATED | APP_F_QUIET |
+                                                   APP_F_TEMP_IMPLAUSIBLE)) == 0u) {
+                unsigned i;
+                for (i = 0; i < 3u; i++) {
+                    a->ref_a[i] = res->accel_g[i];
+                }
+                a->ref_noise_g = n;
+                a->ref_set = true;
+            }
+        } else {
+            const int64_t tol = (int64_t)drift - n - a->ref_noise_g;
+            unsigned i;
+            for (i = 0; i < 2u; i++) {
+                int64_t d = (int64_t)res->accel_g[ax[i]] - a->ref_a[ax[i]];
+                d = d < 0 ? -d : d;
+                if (tol <= 0 || d > tol) {
+                    a->offset_fault = true;
+                }
+            }
+        }
+    }
+    if (a->offset_fault) {
+        res->flags |= APP_F_OFFSET_STEP;
+    }
 }
 
 static void finish_block(struct app *a, struct app_result *res)
@@ -290,7 +410,7 @@ static void finish_block(struct app *a, struct app_result *res)
             sc.budget.sensitivity = FX_Q30_HALF - 1; /* the bound is flagged long before this */
         }
     }
-    sc.budget.offset_g = cal ? b->offset_g : b->offset_uncal_g;
+    sc.budget.offset_g = cal ? fx_add(b->offset_g, b->offset_drift_g) : b->offset_uncal_g;
     sc.budget.nonlinearity_g = b->nonlinearity_g;
     sc.budget.temperature_g = off_comp ? b->temp_comp_g : b->temp_uncomp_g;
     sc.budget.noise_sigma_g = res->sigma_meas_g > b->noise_sigma_g ? res->sigma_meas_g
@@ -306,12 +426,16 @@ static void finish_block(struct app *a, struct app_result *res)
     in.calibrated = cal;
     (void)slope_estimate(&sc, &in, &res->slope); /* sc passed app_cfg_check's rules */
 
-    res->flags = a->flags & 0xFFu;
+    res->flags = a->flags & ~BLOCK_ALL_TEMP;
     if (!cal) res->flags |= APP_F_NOT_CALIBRATED;
     if (!off_comp || !scale_comp) res->flags |= APP_F_TEMP_UNCOMP;
     if (a->errors > a->cfg.max_sensor_errors) res->flags |= APP_F_SENSOR;
     if (!in.still) res->flags |= APP_F_NOT_STILL;
-    res->valid = res->slope.valid && (res->flags & (APP_F_SENSOR | APP_F_SATURATED)) == 0u;
+    if (t_have && !temp_plausible(a, t_mean)) res->flags |= APP_F_TEMP_IMPLAUSIBLE;
+    offset_check(a, res, cal && in.still);
+    res->valid = res->slope.valid &&
+                 (res->flags & (APP_F_SENSOR | APP_F_SATURATED | APP_F_QUIET | APP_F_OFFSET_STEP |
+                                APP_F_TEMP_IMPLAUSIBLE)) == 0u;
 }
 
 /* ---- Per sample --------------------------------------------------------------------------------- */
@@ -374,7 +498,13 @@ int app_step(struct app *a, const struct sensor_sample *s, int read_err, struct 
         const struct still_window *w = still_last(&a->still);
         if (w != NULL) {
             const uint8_t sa = a->cfg.slope.slope_axis, ga = a->cfg.slope.gravity_axis;
+            const uint64_t floor_g = (uint64_t)(uint32_t)a->cfg.noise_floor_g;
             if (w->accel_var[sa] > a->var_max) a->var_max = w->accel_var[sa];
+            for (i = 0; i < 3u; i++) {
+                if (w->accel_var[i] < floor_g * floor_g) {
+                    a->flags |= APP_F_QUIET;
+                }
+            }
             if (a->cfg.slope.method == SLOPE_TWO_AXIS && w->accel_var[ga] > a->var_max) {
                 a->var_max = w->accel_var[ga];
             }

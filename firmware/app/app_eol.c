@@ -121,3 +121,52 @@ int app_eol_save(struct app *a, struct calrec *rec, struct calstore *store,
     rec->binding = a->id;
     return calstore_save(store, rec, info);
 }
+
+int app_eol_verify(struct app *a, const struct app_face *f, int face, fx_q16_t tol_g,
+                   fx_q16_t *dev_g)
+{
+    struct cal_acc acc;
+    fx_q16_t out[3];
+    int64_t dev = 0;
+    unsigned i;
+    int err;
+    if (a == NULL || f == NULL) {
+        return INC_ERR_NULL;
+    }
+    if (!a->ready) {
+        return INC_ERR_STATE;
+    }
+    if (face < 0 || face >= CAL_FACES || tol_g < 0) {
+        return INC_ERR_INVAL;
+    }
+    if (!a->acc.calibrated || !a->rec.valid) {
+        return INC_ERR_NOT_CALIBRATED;
+    }
+    /* a copy evaluated at the face's temperature: the running state is left as it is */
+    acc = a->acc;
+    if ((f->flags & SENSOR_S_HAVE_TEMP) != 0u) {
+        err = cal_acc_set_temp(&acc, f->temp_c);
+        if (err != INC_OK) {
+            return err == INC_ERR_RANGE ? INC_ERR_NOT_CALIBRATED : err;
+        }
+    }
+    err = cal_acc_apply(&acc, f->accel_g, out);
+    if (err != INC_OK) {
+        return INC_ERR_RANGE;
+    }
+    for (i = 0; i < 3u; i++) {
+        int64_t ideal = 0, d;
+        if ((unsigned)face / 2u == i) {
+            ideal = (face & 1) != 0 ? -(int64_t)FX_Q16_ONE : (int64_t)FX_Q16_ONE;
+        }
+        d = (int64_t)out[i] - ideal;
+        d = d < 0 ? -d : d;
+        if (d > dev) {
+            dev = d;
+        }
+    }
+    if (dev_g != NULL) {
+        *dev_g = dev > INT32_MAX ? INT32_MAX : (fx_q16_t)dev;
+    }
+    return dev <= tol_g ? INC_OK : INC_ERR_RANGE;
+}

@@ -15,6 +15,7 @@
 struct script {
     struct sensor_sample s; /* what every read returns ... */
     int32_t wobble_x;       /* ... with x + wobble on odd reads, x - wobble on even ones */
+    int32_t wobble_yz;      /* ... and y, z likewise */
     uint32_t fail_every;    /* every n-th read fails (0: never) */
     int fail_err;
     int id_err; /* identity read error */
@@ -31,6 +32,8 @@ static int script_read(void *ctx, struct sensor_sample *out)
     }
     *out = p->s;
     out->accel_g[0] += (p->reads & 1u) ? p->wobble_x : -p->wobble_x;
+    out->accel_g[1] += (p->reads & 1u) ? p->wobble_yz : -p->wobble_yz;
+    out->accel_g[2] += (p->reads & 1u) ? p->wobble_yz : -p->wobble_yz;
     return INC_OK;
 }
 
@@ -170,6 +173,9 @@ static void cfg_small(void)
     REQUIRE(app_cfg_default(&cfg, 819200u) == INC_OK);
     cfg.still.window = 16u;
     cfg.avg_n = 64u;
+    cfg.noise_floor_g = 0;         /* scripted samples are noiseless (test_noise_floor) */
+    cfg.budget.offset_drift_g = 0; /* nor do they age (test_offset_change) */
+    cfg.temp_step_max_c = 0;       /* and their temperature jumps (test_temp_plausibility) */
 }
 
 /* Run one block of scripted samples through app_step. */
@@ -477,6 +483,301 @@ static void test_block_flags(void)
     CHECK_EQ_INT(r.missed, 128);
 }
 
+/* The noise-floor check: a quiet accelerometer axis is a frozen or stuck output. */
+static void test_noise_floor(void)
+{
+    struct app_result r;
+    struct calrec rec;
+    script_reset();
+    cfg_small();
+    store_reset();
+    make_record(&rec, true);
+    REQUIRE(calstore_save(&store, &rec, NULL) == INC_OK);
+    {
+        struct app_cfg d;
+        REQUIRE(app_cfg_default(&d, 819200u) == INC_OK);
+        CHECK_EQ_INT(d.noise_floor_g, d.budget.noise_sigma_g / APP_QUIET_DIV); /* 4 mg / 4 */
+        cfg.noise_floor_g = d.noise_floor_g;
+    }
+    REQUIRE(app_init(&app, &cfg, &sensor, &store) == INC_OK);
+    /* constant samples (a frozen part): every window has variance 0 on every axis */
+    REQUIRE(run_block(&r) == INC_OK);
+    CHECK(!r.valid);
+    CHECK((r.flags & APP_F_QUIET) != 0u);
+    CHECK(r.slope.valid); /* the slope itself passed: the application says no */
+    /* +-2 mg on x only: y and z still quiet (a stuck pair of axes) */
+    sc.wobble_x = G(2);
+    REQUIRE(run_block(&r) == INC_OK);
+    CHECK((r.flags & APP_F_QUIET) != 0u);
+    CHECK(!r.valid);
+    /* +-2 mg on every axis (calibrated rms ~2 mg): above the 1 mg floor, valid */
+    sc.wobble_yz = G(2);
+    REQUIRE(run_block(&r) == INC_OK);
+    CHECK_EQ_HEX(r.flags & APP_F_QUIET, 0u);
+    CHECK(r.valid);
+    /* a floor of 3 mg: the 2 mg part is "too quiet" */
+    cfg.noise_floor_g = G(3);
+    REQUIRE(app_init(&app, &cfg, &sensor, &store) == INC_OK);
+    REQUIRE(run_block(&r) == INC_OK);
+    CHECK((r.flags & APP_F_QUIET) != 0u);
+    CHECK(!r.valid);
+    sc.wobble_x = sc.wobble_yz = 0;
+    cfg.noise_floor_g = 0; /* 0: no check */
+    REQUIRE(app_init(&app, &cfg, &sensor, &store) == INC_OK);
+    REQUIRE(run_block(&r) == INC_OK);
+    CHECK((r.flags & APP_F_QUIET) == 0u);
+    CHECK(r.valid);
+    cfg.noise_floor_g = -1;
+    CHECK_ERR(app_cfg_check(&cfg), INC_ERR_INVAL);
+}
+
+/* The offset-change check: the reference block, the tolerance, the latch, the restart. */
+static void test_offset_change(void)
+{
+    struct app_result r;
+    struct calrec rec;
+    fx_q16_t tol;
+    script_reset();
+    cfg_small();
+    store_reset();
+    make_record(&rec, true);
+    REQUIRE(calstore_save(&store, &rec, NULL) == INC_OK);
+    {
+        struct app_cfg d;
+        REQUIRE(app_cfg_default(&d, 819200u) == INC_OK);
+        CHECK_EQ_INT(d.budget.offset_drift_g, G(10)); /* [ADI-EPB]: 20 % of 50 mg */
+    }
+    cfg.budget.offset_drift_g = G(10);
+    cfg.budget.nonlinearity_g = cfg.budget.temp_comp_g = 0; /* keep the bound below 2 deg */
+    REQUIRE(app_init(&app, &cfg, &sensor, &store) == INC_OK);
+    REQUIRE(run_block(&r) == INC_OK); /* the reference */
+    CHECK(r.valid);
+    CHECK_EQ_HEX(r.flags & APP_F_OFFSET_STEP, 0u);
+    /* the bound carries the term: offset = residual + drift */
+    CHECK_EQ_INT(r.budget.offset_g, cfg.budget.offset_g + cfg.budget.offset_drift_g);
+    /* tolerance = drift - n - n_ref; the scripted block has the rated noise term on both */
+    tol = cfg.budget.offset_drift_g - 2 * r.slope.noise_g;
+    CHECK(tol > G(3) && tol < G(5));
+    /* a change of 3 mg on x (through the record's gain: about 3 mg calibrated): not flagged */
+    sc.s.accel_g[0] += G(3);
+    REQUIRE(run_block(&r) == INC_OK);
+    CHECK(r.valid);
+    CHECK_EQ_HEX(r.flags & APP_F_OFFSET_STEP, 0u);
+    /* 6 mg: flagged, not valid */
+    sc.s.accel_g[0] += G(3);
+    REQUIRE(run_block(&r) == INC_OK);
+    CHECK(!r.valid);
+    CHECK((r.flags & APP_F_OFFSET_STEP) != 0u);
+    /* latched: back at the reference value, still flagged */
+    sc.s.accel_g[0] -= G(6);
+    REQUIRE(run_block(&r) == INC_OK);
+    CHECK(!r.valid);
+    CHECK((r.flags & APP_F_OFFSET_STEP) != 0u);
+    /* app_restart takes a new reference */
+    app_restart(&app);
+    REQUIRE(run_block(&r) == INC_OK);
+    CHECK(r.valid);
+    CHECK_EQ_HEX(r.flags & APP_F_OFFSET_STEP, 0u);
+    /* on the gravity axis too */
+    sc.s.accel_g[2] -= G(8);
+    REQUIRE(run_block(&r) == INC_OK);
+    CHECK((r.flags & APP_F_OFFSET_STEP) != 0u);
+    sc.s.accel_g[2] += G(8);
+    /* a drift term too small for the noise terms: the check cannot tell, never valid after the
+     * reference */
+    cfg.budget.offset_drift_g = G(2);
+    REQUIRE(app_init(&app, &cfg, &sensor, &store) == INC_OK);
+    REQUIRE(run_block(&r) == INC_OK);
+    CHECK(r.valid);
+    REQUIRE(run_block(&r) == INC_OK);
+    CHECK((r.flags & APP_F_OFFSET_STEP) != 0u);
+    /* a block that is not still neither takes nor compares the reference */
+    cfg.budget.offset_drift_g = G(10);
+    sc.reads = 0;
+    REQUIRE(app_init(&app, &cfg, &sensor, &store) == INC_OK);
+    sc.wobble_x = G(100);
+    REQUIRE(run_block(&r) == INC_OK);
+    CHECK(!r.valid);
+    CHECK_EQ_HEX(r.flags & APP_F_OFFSET_STEP, 0u);
+    CHECK(!app.ref_set);
+    sc.wobble_x = 0;
+    /* 0: neither term nor check */
+    cfg.budget.offset_drift_g = 0;
+    REQUIRE(app_init(&app, &cfg, &sensor, &store) == INC_OK);
+    REQUIRE(run_block(&r) == INC_OK);
+    sc.s.accel_g[0] += G(50);
+    REQUIRE(run_block(&r) == INC_OK);
+    CHECK_EQ_HEX(r.flags & APP_F_OFFSET_STEP, 0u);
+    CHECK_EQ_INT(r.budget.offset_g, cfg.budget.offset_g);
+    sc.s.accel_g[0] -= G(50);
+    cfg.budget.offset_drift_g = -1;
+    CHECK_ERR(app_cfg_check(&cfg), INC_ERR_INVAL);
+}
+
+/* The record against the part type's limits at app_init. */
+static void test_record_plausibility(void)
+{
+    struct calrec rec;
+    struct app_cfg d;
+    script_reset();
+    REQUIRE(app_cfg_default(&d, 819200u) == INC_OK);
+    CHECK_EQ_INT(d.rec_offset_max_g, G(100));
+    CHECK_EQ_INT(d.rec_gain_tol, 107374182);    /* 0.1 in Q30 */
+    CHECK_EQ_INT(d.rec_misalign_max, 37580963); /* 0.035 in Q30 */
+    cfg_small();
+    /* at the limits: loaded */
+    store_reset();
+    make_record(&rec, true);
+    rec.acc_offset[1] = -G(100);
+    rec.acc_gain[2] = FX_Q30_ONE + cfg.rec_gain_tol;
+    rec.acc_misalign[0][1] = -cfg.rec_misalign_max;
+    REQUIRE(calstore_save(&store, &rec, NULL) == INC_OK);
+    REQUIRE(app_init(&app, &cfg, &sensor, &store) == INC_OK);
+    CHECK_OK(app.cal_status);
+    CHECK(app_calibrated(&app));
+    /* one step beyond each: intact and bound to this part, but refused */
+    {
+        int k;
+        for (k = 0; k < 3; k++) {
+            struct app_result r;
+            store_reset();
+            make_record(&rec, true);
+            if (k == 0) rec.acc_offset[1] = -G(100) - 1;
+            if (k == 1) rec.acc_gain[2] = FX_Q30_ONE - cfg.rec_gain_tol - 1;
+            if (k == 2) rec.acc_misalign[2][0] = cfg.rec_misalign_max + 1;
+            REQUIRE(calstore_save(&store, &rec, NULL) == INC_OK);
+            REQUIRE(app_init(&app, &cfg, &sensor, &store) == INC_OK);
+            CHECK_ERR(app.cal_status, INC_ERR_RANGE);
+            CHECK(!app_calibrated(&app));
+            REQUIRE(run_block(&r) == INC_OK);
+            CHECK(!r.valid);
+            CHECK((r.flags & APP_F_NOT_CALIBRATED) != 0u);
+        }
+    }
+    /* 0: that check off */
+    cfg.rec_offset_max_g = 0;
+    store_reset();
+    make_record(&rec, true);
+    rec.acc_offset[1] = G(300);
+    REQUIRE(calstore_save(&store, &rec, NULL) == INC_OK);
+    REQUIRE(app_init(&app, &cfg, &sensor, &store) == INC_OK);
+    CHECK_OK(app.cal_status);
+    cfg.rec_gain_tol = -1;
+    CHECK_ERR(app_cfg_check(&cfg), INC_ERR_INVAL);
+}
+
+/* The end-of-line verification: calibrated face against +-1 g. */
+static void test_eol_verify(void)
+{
+    struct calrec rec;
+    struct app_face f;
+    struct cal_acc ref;
+    fx_q16_t out[3], dev = -1;
+    int64_t exp_dev = 0;
+    unsigned i;
+    script_reset();
+    cfg_small();
+    store_reset();
+    make_record(&rec, false);
+    REQUIRE(calstore_save(&store, &rec, NULL) == INC_OK);
+    REQUIRE(app_init(&app, &cfg, &sensor, &store) == INC_OK);
+    REQUIRE(app_calibrated(&app));
+    /* a raw XP face: x = 1.01 g + 10 mg (the record's gain and offset) plus 3 mg, y 2 mg, z -1 mg */
+    memset(&f, 0, sizeof f);
+    f.accel_g[0] = G(1023);
+    f.accel_g[1] = G(2);
+    f.accel_g[2] = -G(1);
+    f.temp_c = FX_Q16_INT(25);
+    f.flags = SENSOR_S_HAVE_TEMP;
+    rec.valid = true;
+    REQUIRE(cal_acc_init(&ref, &rec, FX_Q16_INT(25)) == INC_OK);
+    REQUIRE(cal_acc_apply(&ref, f.accel_g, out) == INC_OK);
+    for (i = 0; i < 3u; i++) {
+        int64_t d = (int64_t)out[i] - (i == 0u ? FX_Q16_ONE : 0);
+        d = d < 0 ? -d : d;
+        if (d > exp_dev) exp_dev = d;
+    }
+    CHECK(exp_dev > G(1) && exp_dev < G(5));
+    CHECK_OK(app_eol_verify(&app, &f, CAL_FACE_XP, (fx_q16_t)exp_dev, &dev));
+    CHECK_EQ_INT(dev, exp_dev);
+    CHECK_ERR(app_eol_verify(&app, &f, CAL_FACE_XP, (fx_q16_t)exp_dev - 1, &dev), INC_ERR_RANGE);
+    /* the same face claimed as XN: 2 g off */
+    CHECK_ERR(app_eol_verify(&app, &f, CAL_FACE_XN, G(5), &dev), INC_ERR_RANGE);
+    CHECK(dev > G(1990));
+    CHECK_ERR(app_eol_verify(&app, &f, 6, G(5), NULL), INC_ERR_INVAL);
+    CHECK_ERR(app_eol_verify(&app, &f, CAL_FACE_XP, -1, NULL), INC_ERR_INVAL);
+    CHECK_ERR(app_eol_verify(NULL, &f, CAL_FACE_XP, G(5), NULL), INC_ERR_NULL);
+    /* no record: nothing to verify */
+    store_reset();
+    REQUIRE(app_init(&app, &cfg, &sensor, &store) == INC_OK);
+    CHECK_ERR(app_eol_verify(&app, &f, CAL_FACE_XP, G(5), NULL), INC_ERR_NOT_CALIBRATED);
+}
+
+/* The temperature plausibility: range, rate, second source. */
+static void test_temp_plausibility(void)
+{
+    struct app_result r;
+    struct calrec rec;
+    struct app_cfg d;
+    REQUIRE(app_cfg_default(&d, 819200u) == INC_OK);
+    CHECK_EQ_INT(d.temp_min_c, FX_Q16_INT(-45));
+    CHECK_EQ_INT(d.temp_max_c, FX_Q16_INT(130));
+    CHECK_EQ_INT(d.temp_step_max_c, FX_Q16_INT(2));
+    CHECK_EQ_INT(d.temp_ref_tol_c, FX_Q16_INT(15));
+    script_reset();
+    cfg_small();
+    cfg.temp_step_max_c = d.temp_step_max_c;
+    store_reset();
+    make_record(&rec, true);
+    REQUIRE(calstore_save(&store, &rec, NULL) == INC_OK);
+    REQUIRE(app_init(&app, &cfg, &sensor, &store) == INC_OK);
+    REQUIRE(run_block(&r) == INC_OK);
+    CHECK(r.valid);
+    CHECK_EQ_HEX(r.flags & APP_F_TEMP_IMPLAUSIBLE, 0u);
+    /* +2 degC in a block: at the limit */
+    sc.s.temp_c += FX_Q16_INT(2);
+    REQUIRE(run_block(&r) == INC_OK);
+    CHECK(r.valid);
+    /* +2.5 degC: faster than a die warms */
+    sc.s.temp_c += FX_Q16_INT(2) + FX_Q16_HALF;
+    REQUIRE(run_block(&r) == INC_OK);
+    CHECK(!r.valid);
+    CHECK((r.flags & APP_F_TEMP_IMPLAUSIBLE) != 0u);
+    /* steady again: plausible (not latched) */
+    REQUIRE(run_block(&r) == INC_OK);
+    CHECK(r.valid);
+    /* the second source: 29.5 degC read, the board at 14.5 (15 off: at the limit), then 14 */
+    app_set_temp_ref(&app, FX_Q16_INT(14) + FX_Q16_HALF, true);
+    REQUIRE(run_block(&r) == INC_OK);
+    CHECK(r.valid);
+    app_set_temp_ref(&app, FX_Q16_INT(14), true);
+    REQUIRE(run_block(&r) == INC_OK);
+    CHECK(!r.valid);
+    CHECK((r.flags & APP_F_TEMP_IMPLAUSIBLE) != 0u);
+    app_set_temp_ref(&app, 0, false); /* none fitted */
+    REQUIRE(run_block(&r) == INC_OK);
+    CHECK(r.valid);
+    /* the range, on a fresh instance (no previous block) */
+    sc.s.temp_c = FX_Q16_INT(131);
+    REQUIRE(app_init(&app, &cfg, &sensor, &store) == INC_OK);
+    REQUIRE(run_block(&r) == INC_OK);
+    CHECK((r.flags & APP_F_TEMP_IMPLAUSIBLE) != 0u);
+    CHECK(!r.valid);
+    sc.s.temp_c = FX_Q16_INT(-46);
+    REQUIRE(app_init(&app, &cfg, &sensor, &store) == INC_OK);
+    REQUIRE(run_block(&r) == INC_OK);
+    CHECK((r.flags & APP_F_TEMP_IMPLAUSIBLE) != 0u);
+    /* a part without temperature output: nothing to check */
+    sc.s.flags &= ~SENSOR_S_HAVE_TEMP;
+    REQUIRE(app_init(&app, &cfg, &sensor, &store) == INC_OK);
+    REQUIRE(run_block(&r) == INC_OK);
+    CHECK_EQ_HEX(r.flags & APP_F_TEMP_IMPLAUSIBLE, 0u);
+    sc.s.flags |= SENSOR_S_HAVE_TEMP;
+    sc.s.temp_c = FX_Q16_INT(25);
+    cfg.temp_min_c = FX_Q16_INT(140); /* above temp_max_c */
+    CHECK_ERR(app_cfg_check(&cfg), INC_ERR_INVAL);
+}
+
 static void test_eol(void)
 {
     static const int32_t one = FX_Q16_ONE;
@@ -567,6 +868,11 @@ int main(void)
     UNIT_RUN(test_calibrated);
     UNIT_RUN(test_binding_and_store);
     UNIT_RUN(test_block_flags);
+    UNIT_RUN(test_noise_floor);
+    UNIT_RUN(test_offset_change);
+    UNIT_RUN(test_record_plausibility);
+    UNIT_RUN(test_eol_verify);
+    UNIT_RUN(test_temp_plausibility);
     UNIT_RUN(test_eol);
     return unit_report();
 }

@@ -426,6 +426,7 @@ int main(int argc, char **argv)
     const epb::Budget bud = epb::derive_budget(type, st, pi->acc_lsb_g, pi->temp_lsb_c, n_face,
                                                cfg);
     cfg.budget = bud.b;
+    cfg.noise_floor_g = bud.b.noise_sigma_g / APP_QUIET_DIV; // the part's rated noise floor
 
     // ---- 2. The part goes into the car, which parks on the slope --------------------------
     struct epb_rig_vehicle veh;

@@ -266,6 +266,7 @@ Budget derive_budget(const sim_calpart_params &type, const StationOut &st, doubl
     app_budget &b = out.b;
     b.sensitivity = up30(sens);
     b.offset_g = up16(offset);
+    b.offset_drift_g = cfg.budget.offset_drift_g; // the part type's, not the station's
     b.nonlinearity_g = up16(nonlin);
     b.temp_comp_g = up16(tcomp);
     b.temp_uncomp_g = up16(kSeedTempUncomp);
@@ -276,16 +277,17 @@ Budget derive_budget(const sim_calpart_params &type, const StationOut &st, doubl
     b.lifetime_runs = runs;
     b.exceed_expected = exceed;
 
-    char buf[160];
+    char buf[256];
     out.terms.push_back({"sensitivity", sens, ""});
     std::snprintf(buf, sizeof buf, "flip gain from %u-sample faces, k sigma/sqrt(2N)%s", n_face,
                   st.tcal ? " + three-point scale residual" : "");
     out.terms.back().origin = buf;
     std::snprintf(
         buf, sizeof buf,
-        "flip offset and cross-axis from %u-sample faces, k sigma/sqrt(N), + 4 LSB arithmetic",
-        n_face);
-    out.terms.push_back({"offset", offset, buf});
+        "flip offset and cross-axis from %u-sample faces, k sigma/sqrt(N), + 4 LSB arithmetic, "
+        "+ %.1f mg offset change after calibration ([ADI-EPB], checked: docs/safety.md)",
+        n_face, cfg.budget.offset_drift_g / kQ16 * 1e3);
+    out.terms.push_back({"offset", offset + cfg.budget.offset_drift_g / kQ16, buf});
     if (st.nonlin) {
         std::snprintf(
             buf, sizeof buf,
