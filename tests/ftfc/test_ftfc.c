@@ -30,7 +30,7 @@ static void charge(void *ctx)
     sim_clock_advance_to(&clk, clk.now_ns + ACCESS_NS);
 }
 
-static int model_up(enum s32k_part part, uint8_t depart, uint32_t erase_ns, uint32_t program_ns,
+static int model_up(enum s32k_ftfc_part part, uint8_t depart, uint32_t erase_ns, uint32_t program_ns,
                     bool map_fcfg1)
 {
     struct sim_s32k_ftfc_cfg mc;
@@ -46,7 +46,7 @@ static int model_up(enum s32k_part part, uint8_t depart, uint32_t erase_ns, uint
     return sim_s32k_ftfc_init(&model, &mc);
 }
 
-static int drv_up(enum s32k_part part, uint32_t poll_limit)
+static int drv_up(enum s32k_ftfc_part part, uint32_t poll_limit)
 {
     struct s32k_ftfc_cfg c;
     c.part = part;
@@ -70,26 +70,26 @@ static void bus_clean(void)
 
 static void test_partition_policy(void)
 {
-    REQUIRE(model_up(S32K_PART_S32K144, 0xF, 0, 0, true) == 0);
-    CHECK_ERR(drv_up(S32K_PART_S32K144, 0), INC_ERR_STATE); /* never partitioned: refused */
+    REQUIRE(model_up(S32K_FTFC_S32K144, 0xF, 0, 0, true) == 0);
+    CHECK_ERR(drv_up(S32K_FTFC_S32K144, 0), INC_ERR_STATE); /* never partitioned: refused */
     CHECK_ERR(s32k_ftfc_erase_sector(&drv, 0), INC_ERR_STATE);
     CHECK_EQ_INT(model.stats.launches, 0);
-    REQUIRE(model_up(S32K_PART_S32K144, 0x1, 0, 0, true) == 0);
-    CHECK_ERR(drv_up(S32K_PART_S32K144, 0), INC_ERR_UNSUPPORTED); /* reserved code */
-    REQUIRE(model_up(S32K_PART_S32K144, 0x4, 0, 0, true) == 0);
-    CHECK_ERR(drv_up(S32K_PART_S32K144, 0), INC_ERR_UNSUPPORTED); /* all EEPROM backup */
-    REQUIRE(model_up(S32K_PART_S32K144, 0x0, 0, 0, true) == 0);
-    CHECK_OK(drv_up(S32K_PART_S32K144, 0));
+    REQUIRE(model_up(S32K_FTFC_S32K144, 0x1, 0, 0, true) == 0);
+    CHECK_ERR(drv_up(S32K_FTFC_S32K144, 0), INC_ERR_UNSUPPORTED); /* reserved code */
+    REQUIRE(model_up(S32K_FTFC_S32K144, 0x4, 0, 0, true) == 0);
+    CHECK_ERR(drv_up(S32K_FTFC_S32K144, 0), INC_ERR_UNSUPPORTED); /* all EEPROM backup */
+    REQUIRE(model_up(S32K_FTFC_S32K144, 0x0, 0, 0, true) == 0);
+    CHECK_OK(drv_up(S32K_FTFC_S32K144, 0));
     CHECK_EQ_INT(drv.dflash_size, 65536);
-    REQUIRE(model_up(S32K_PART_S32K144, 0x3, 0, 0, true) == 0);
-    CHECK_OK(drv_up(S32K_PART_S32K144, 0));
+    REQUIRE(model_up(S32K_FTFC_S32K144, 0x3, 0, 0, true) == 0);
+    CHECK_OK(drv_up(S32K_FTFC_S32K144, 0));
     CHECK_EQ_INT(drv.dflash_size, 32768);
-    REQUIRE(model_up(S32K_PART_S32K116, 0x0, 0, 0, true) == 0);
-    CHECK_OK(drv_up(S32K_PART_S32K116, 0));
+    REQUIRE(model_up(S32K_FTFC_S32K116, 0x0, 0, 0, true) == 0);
+    CHECK_OK(drv_up(S32K_FTFC_S32K116, 0));
     CHECK_EQ_INT(drv.dflash_size, 32768);
-    CHECK_EQ_INT(s32k_ftfc_dflash_size(S32K_PART_S32K116, 0x9), 8192);
-    CHECK_EQ_INT(s32k_ftfc_dflash_size(S32K_PART_S32K144, 0xA), 16384);
-    CHECK_EQ_INT(s32k_ftfc_dflash_size(S32K_PART_S32K116, 0xC), 0);
+    CHECK_EQ_INT(s32k_ftfc_dflash_size(S32K_FTFC_S32K116, 0x9), 8192);
+    CHECK_EQ_INT(s32k_ftfc_dflash_size(S32K_FTFC_S32K144, 0xA), 16384);
+    CHECK_EQ_INT(s32k_ftfc_dflash_size(S32K_FTFC_S32K116, 0xC), 0);
     CHECK_ERR(s32k_ftfc_init(NULL, NULL), INC_ERR_NULL);
 }
 
@@ -101,8 +101,8 @@ static void test_erase_program_read(void)
                                    0x10, 0x20, 0x30, 0x40, 0x50, 0x60, 0x70, 0x80};
     uint8_t buf[16];
     uint64_t t0;
-    REQUIRE(model_up(S32K_PART_S32K144, 0x0, 0, 0, true) == 0);
-    REQUIRE(drv_up(S32K_PART_S32K144, 0) == 0);
+    REQUIRE(model_up(S32K_FTFC_S32K144, 0x0, 0, 0, true) == 0);
+    REQUIRE(drv_up(S32K_FTFC_S32K144, 0) == 0);
 
     /* Program two phrases at the end of the D-flash; read them back at odd offsets. */
     t0 = clk.now_ns;
@@ -172,9 +172,9 @@ static const struct s32k_bus_region_ops fake_ops = {fake_fcfg1, fake_write};
 static void test_accerr_and_timeouts(void)
 {
     static const uint8_t ph[8] = {0};
-    REQUIRE(model_up(S32K_PART_S32K144, 0x3, 0, 0, false) == 0);
+    REQUIRE(model_up(S32K_FTFC_S32K144, 0x3, 0, 0, false) == 0);
     REQUIRE(s32k_bus_map(S32K_SIM_FCFG1, 4u, &fake_ops, NULL) == 0);
-    REQUIRE(drv_up(S32K_PART_S32K144, 0) == 0);
+    REQUIRE(drv_up(S32K_FTFC_S32K144, 0) == 0);
     CHECK_EQ_INT(drv.dflash_size, 65536);
     CHECK_ERR(s32k_ftfc_erase_sector(&drv, 40960u), INC_ERR_INVAL);
     CHECK_EQ_INT(drv.stats.accerr, 1);
@@ -184,8 +184,8 @@ static void test_accerr_and_timeouts(void)
 
     /* A command slower than the poll limit: INC_ERR_TIMEOUT; the next one finds CCIF = 0
      * (INC_ERR_BUSY) until the controller is done. */
-    REQUIRE(model_up(S32K_PART_S32K144, 0x0, 50000000u, 0, true) == 0);
-    REQUIRE(drv_up(S32K_PART_S32K144, 4000u) == 0); /* 100 us of polling */
+    REQUIRE(model_up(S32K_FTFC_S32K144, 0x0, 50000000u, 0, true) == 0);
+    REQUIRE(drv_up(S32K_FTFC_S32K144, 4000u) == 0); /* 100 us of polling */
     CHECK_ERR(s32k_ftfc_erase_sector(&drv, 0u), INC_ERR_TIMEOUT);
     CHECK_ERR(s32k_ftfc_program(&drv, 2048u, ph, 8u), INC_ERR_BUSY);
     sim_clock_advance_to(&clk, clk.now_ns + 50000000u);
@@ -197,7 +197,7 @@ static void test_accerr_and_timeouts(void)
 
 static int store_up(void)
 {
-    int err = drv_up(S32K_PART_S32K144, 0);
+    int err = drv_up(S32K_FTFC_S32K144, 0);
     if (err == INC_OK) {
         err = calstore_ftfc_config(&drv, 30u, &scfg); /* the last two sectors */
     }
@@ -211,7 +211,7 @@ static void test_record_survives_power_cycle(void)
 {
     struct calrec rec, out;
     struct calstore_info info;
-    REQUIRE(model_up(S32K_PART_S32K144, 0x0, 0, 0, true) == 0);
+    REQUIRE(model_up(S32K_FTFC_S32K144, 0x0, 0, 0, true) == 0);
     REQUIRE(store_up() == 0);
     CHECK_EQ_INT(scfg.slot_addr[0], 30u * 2048u);
     CHECK_EQ_INT(scfg.prog_size, 8);
@@ -243,7 +243,7 @@ static void test_power_cut_every_step(void)
     struct calstore_info info;
     unsigned cases = 0, bad = 0, new_seen = 0;
     int k;
-    REQUIRE(model_up(S32K_PART_S32K144, 0x0, 100000u, 10000u, true) == 0);
+    REQUIRE(model_up(S32K_FTFC_S32K144, 0x0, 100000u, 10000u, true) == 0);
     REQUIRE(store_up() == 0);
     for (k = 0; k < WRITES; k++) {
         fix_record_variant(&recs[k], k);

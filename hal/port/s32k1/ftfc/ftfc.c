@@ -15,15 +15,15 @@ static const uint32_t depart_s32k116[16] = {
     0u,      0x2000u,  RESERVED, 0x8000u, RESERVED, RESERVED, RESERVED, 0x8000u,
 };
 
-uint32_t s32k_ftfc_dflash_size(enum s32k_part part, uint8_t depart)
+uint32_t s32k_ftfc_dflash_size(enum s32k_ftfc_part part, uint8_t depart)
 {
     uint32_t v;
     if (depart > 15u) {
         return 0u;
     }
-    if (part == S32K_PART_S32K144) {
+    if (part == S32K_FTFC_S32K144) {
         v = depart_s32k144[depart];
-    } else if (part == S32K_PART_S32K116) {
+    } else if (part == S32K_FTFC_S32K116) {
         v = depart_s32k116[depart];
     } else {
         return 0u;
@@ -102,7 +102,7 @@ int s32k_ftfc_init(struct s32k_ftfc *f, const struct s32k_ftfc_cfg *cfg)
         return INC_ERR_NULL;
     }
     f->ready = false;
-    if (cfg->part != S32K_PART_S32K144 && cfg->part != S32K_PART_S32K116) {
+    if (cfg->part != S32K_FTFC_S32K144 && cfg->part != S32K_FTFC_S32K116) {
         return INC_ERR_INVAL;
     }
     f->cfg = *cfg;

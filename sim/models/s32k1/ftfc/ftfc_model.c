@@ -295,7 +295,7 @@ int sim_s32k_ftfc_init(struct sim_s32k_ftfc *m, const struct sim_s32k_ftfc_cfg *
     if (m == NULL || cfg == NULL || cfg->clk == NULL) {
         return INC_ERR_NULL;
     }
-    if (cfg->part != S32K_PART_S32K144 && cfg->part != S32K_PART_S32K116) {
+    if (cfg->part != S32K_FTFC_S32K144 && cfg->part != S32K_FTFC_S32K116) {
         return INC_ERR_INVAL;
     }
     memset(m, 0, sizeof(*m));
@@ -306,7 +306,7 @@ int sim_s32k_ftfc_init(struct sim_s32k_ftfc *m, const struct sim_s32k_ftfc_cfg *
     if (m->cfg.program_ns == 0u) {
         m->cfg.program_ns = SIM_FTFC_PROGRAM_NS_DEFAULT;
     }
-    m->flexnvm_size = cfg->part == S32K_PART_S32K144 ? S32K144_FLEXNVM_SIZE : S32K116_FLEXNVM_SIZE;
+    m->flexnvm_size = cfg->part == S32K_FTFC_S32K144 ? S32K144_FLEXNVM_SIZE : S32K116_FLEXNVM_SIZE;
     m->dflash_size = s32k_ftfc_dflash_size(cfg->part, cfg->depart);
     memset(m->mem, 0xFF, sizeof(m->mem));
     m->powered = true;

@@ -73,13 +73,13 @@ extern "C" {
 /* Status reads one wait may take (a bound, not a time: about 0.5 s at 112 MHz). */
 #define S32K_FTFC_POLL_DEFAULT 20000000u
 
-enum s32k_part {
-    S32K_PART_S32K144 = 0,
-    S32K_PART_S32K116 = 1,
+enum s32k_ftfc_part {
+    S32K_FTFC_S32K144 = 0,
+    S32K_FTFC_S32K116 = 1,
 };
 
 struct s32k_ftfc_cfg {
-    enum s32k_part part;
+    enum s32k_ftfc_part part;
     uint32_t ftfc_base;   /* S32K_FTFC_BASE */
     uint32_t fcfg1_addr;  /* S32K_SIM_FCFG1 */
     uint32_t dflash_base; /* S32K_DFLASH_BASE (where D-flash is read) */
@@ -109,7 +109,7 @@ int s32k_ftfc_init(struct s32k_ftfc *f, const struct s32k_ftfc_cfg *cfg);
 
 /* D-flash bytes for a partition code on a part, or 0 (reserved / none); 0xF reports the
  * whole FlexNVM (what it would be), the driver still refuses it. */
-uint32_t s32k_ftfc_dflash_size(enum s32k_part part, uint8_t depart);
+uint32_t s32k_ftfc_dflash_size(enum s32k_ftfc_part part, uint8_t depart);
 
 /* Erase the 2 KiB sector at D-flash offset off (a multiple of S32K_DFLASH_SECTOR). */
 int s32k_ftfc_erase_sector(struct s32k_ftfc *f, uint32_t off);
