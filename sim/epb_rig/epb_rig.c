@@ -325,8 +325,8 @@ int epb_rig_set_board(struct epb_rig *r, enum epb_rig_board board)
     s32k_bus_reset();
     err = sim_s32k_core_init(&r->s32k_core, &r->board.clk);
     if (err == INC_OK) {
-        err = sim_s32k_lpit_init(&r->s32k_lpit, &r->board.clk, &r->s32k_core, d->part,
-                                 S32K_TIME_HZ, SIM_S32K_ACCESS_NS_DEFAULT);
+        err = sim_s32k_lpit_init(&r->s32k_lpit, &r->board.clk, &r->s32k_core, d->part, S32K_TIME_HZ,
+                                 SIM_S32K_ACCESS_NS_DEFAULT);
     }
     if (err == INC_OK) {
         err = sim_s32k_port_gpio_init(&r->s32k_gpio, &r->board.bus, &r->s32k_core, d->part);

@@ -22,7 +22,7 @@ static int switch_to(uint32_t rccr)
 {
     s32k_mmio_write32(S32K_SCG_RCCR, rccr);
     return poll_set(S32K_SCG_CSR, S32K_SCG_SCS_MASK, rccr & S32K_SCG_SCS_MASK) ? INC_OK
-                                                                              : INC_ERR_TIMEOUT;
+                                                                               : INC_ERR_TIMEOUT;
 }
 
 static int firc_48(void)
@@ -96,7 +96,6 @@ int s32k_pcc_enable(uint32_t pcc_addr, uint32_t pcs)
     }
     s32k_mmio_write32(pcc_addr, 0u); /* gate off: PCS may only change with CGC = 0 */
     s32k_mmio_write32(pcc_addr, (pcs << S32K_PCC_PCS_SHIFT) & S32K_PCC_PCS_MASK);
-    s32k_mmio_write32(pcc_addr,
-                      ((pcs << S32K_PCC_PCS_SHIFT) & S32K_PCC_PCS_MASK) | S32K_PCC_CGC);
+    s32k_mmio_write32(pcc_addr, ((pcs << S32K_PCC_PCS_SHIFT) & S32K_PCC_PCS_MASK) | S32K_PCC_CGC);
     return INC_OK;
 }

@@ -114,13 +114,10 @@ static uint32_t nvic_read(void *ctx, uint32_t off, unsigned width)
     }
     switch (off & ~0x7Fu) {
     case 0x000u: /* ISER */
-    case 0x080u: /* ICER */
-        return c->enabled[n];
+    case 0x080u: /* ICER */ return c->enabled[n];
     case 0x100u: /* ISPR */
-    case 0x180u: /* ICPR */
-        return c->pending[n];
-    default:
-        return 0u;
+    case 0x180u: /* ICPR */ return c->pending[n];
+    default: return 0u;
     }
 }
 
@@ -133,20 +130,11 @@ static void nvic_write(void *ctx, uint32_t off, uint32_t v, unsigned width)
         return;
     }
     switch (off & ~0x7Fu) {
-    case 0x000u:
-        c->enabled[n] |= v;
-        break;
-    case 0x080u:
-        c->enabled[n] &= ~v;
-        break;
-    case 0x100u:
-        c->pending[n] |= v;
-        break;
-    case 0x180u:
-        c->pending[n] &= ~v;
-        break;
-    default:
-        break;
+    case 0x000u: c->enabled[n] |= v; break;
+    case 0x080u: c->enabled[n] &= ~v; break;
+    case 0x100u: c->pending[n] |= v; break;
+    case 0x180u: c->pending[n] &= ~v; break;
+    default: break;
     }
     deliver(c);
 }
@@ -209,7 +197,7 @@ static const struct s32k_bus_region_ops pcc_ops = {pcc_read, pcc_write};
 static uint64_t wdog_timeout_ns(const struct sim_s32k_core *c)
 {
     const uint64_t hz = (c->wdog_cs & S32K_WDOG_CS_PRES) != 0u ? S32K_WDOG_LPO_HZ / 256u
-                                                                 : S32K_WDOG_LPO_HZ;
+                                                               : S32K_WDOG_LPO_HZ;
     return (uint64_t)c->wdog_toval * 1000000000ull / hz;
 }
 
@@ -238,7 +226,8 @@ static void wdog_write(void *ctx, uint32_t off, uint32_t v, unsigned width)
             c->wdog_unlocked = true;
         } else if (v == S32K_WDOG_REFRESH_KEY) {
             const uint64_t now = c->clk->now_ns;
-            if ((c->wdog_cs & S32K_WDOG_CS_EN) != 0u && now - c->wdog_last_ns > wdog_timeout_ns(c)) {
+            if ((c->wdog_cs & S32K_WDOG_CS_EN) != 0u &&
+                now - c->wdog_last_ns > wdog_timeout_ns(c)) {
                 c->wdog_bites++;
             }
             c->wdog_last_ns = now;
@@ -272,8 +261,8 @@ int sim_s32k_core_init(struct sim_s32k_core *c, struct sim_clock *clk)
     memset(c, 0, sizeof(*c));
     c->clk = clk;
     /* Reset state: FIRC on, valid and selected (CSR.SCS = FIRC). */
-    c->scg[(S32K_SCG_FIRCCSR - S32K_SCG_BASE) / 4u] =
-        S32K_SCG_XCSR_EN | S32K_SCG_XCSR_VLD | S32K_SCG_XCSR_SEL;
+    c->scg[(S32K_SCG_FIRCCSR - S32K_SCG_BASE) / 4u] = S32K_SCG_XCSR_EN | S32K_SCG_XCSR_VLD |
+                                                      S32K_SCG_XCSR_SEL;
     c->scg[(S32K_SCG_CSR - S32K_SCG_BASE) / 4u] = S32K_SCG_CCR(S32K_SCG_SCS_FIRC, 1u, 1u, 2u);
     c->scg[(S32K_SCG_RCCR - S32K_SCG_BASE) / 4u] = S32K_SCG_CCR(S32K_SCG_SCS_FIRC, 1u, 1u, 2u);
     c->wdog_cs = S32K_WDOG_CS_EN | S32K_WDOG_CS_CLK_LPO | S32K_WDOG_CS_CMD32EN |

@@ -68,8 +68,8 @@ static void on_change(void *arg, unsigned line, bool level, uint64_t t_ns)
         irqc == S32K_PORT_IRQC_EITHER) {
         *pcr |= S32K_PORT_PCR_ISF;
         m->edges_flagged++;
-        sim_s32k_core_raise(m->core, m->part == S32K_PART_116 ? S32K116_IRQ_PORT
-                                                              : S32K144_IRQ_PORTA + port);
+        sim_s32k_core_raise(m->core,
+                            m->part == S32K_PART_116 ? S32K116_IRQ_PORT : S32K144_IRQ_PORTA + port);
     }
 }
 
@@ -127,16 +127,11 @@ static uint32_t gpio_read(void *ctx, uint32_t off, unsigned width)
     const unsigned port = off / 0x40u;
     (void)width;
     switch (off % 0x40u) {
-    case 0x00u:
-        return m->pdor[port];
-    case 0x10u:
-        return pdir(m, port);
-    case 0x14u:
-        return m->pddr[port];
-    case 0x18u:
-        return m->pidr[port];
-    default:
-        return 0u; /* PSOR, PCOR, PTOR read as 0 */
+    case 0x00u: return m->pdor[port];
+    case 0x10u: return pdir(m, port);
+    case 0x14u: return m->pddr[port];
+    case 0x18u: return m->pidr[port];
+    default: return 0u; /* PSOR, PCOR, PTOR read as 0 */
     }
 }
 
@@ -148,26 +143,13 @@ static void gpio_write(void *ctx, uint32_t off, uint32_t v, unsigned width)
     const uint32_t old_dir = m->pddr[port];
     (void)width;
     switch (off % 0x40u) {
-    case 0x00u:
-        m->pdor[port] = v;
-        break;
-    case 0x04u:
-        m->pdor[port] |= v;
-        break;
-    case 0x08u:
-        m->pdor[port] &= ~v;
-        break;
-    case 0x0Cu:
-        m->pdor[port] ^= v;
-        break;
-    case 0x14u:
-        m->pddr[port] = v;
-        break;
-    case 0x18u:
-        m->pidr[port] = v;
-        break;
-    default:
-        break;
+    case 0x00u: m->pdor[port] = v; break;
+    case 0x04u: m->pdor[port] |= v; break;
+    case 0x08u: m->pdor[port] &= ~v; break;
+    case 0x0Cu: m->pdor[port] ^= v; break;
+    case 0x14u: m->pddr[port] = v; break;
+    case 0x18u: m->pidr[port] = v; break;
+    default: break;
     }
     update_outputs(m, port, (old ^ m->pdor[port]) | (old_dir ^ m->pddr[port]));
 }

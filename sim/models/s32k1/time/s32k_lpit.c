@@ -37,8 +37,8 @@ static void schedule(struct sim_s32k_lpit *m, unsigned ch)
     }
     if (running(m, ch)) {
         /* the event's argument is &tval[ch]: expire() recovers the channel from it */
-        const int h = sim_clock_schedule(m->clk, m->start_ns[ch] + ns_of(m, (uint64_t)m->tval[ch] + 1u),
-                                         expire, &m->tval[ch]);
+        const int h = sim_clock_schedule(
+            m->clk, m->start_ns[ch] + ns_of(m, (uint64_t)m->tval[ch] + 1u), expire, &m->tval[ch]);
         m->event[ch] = h > 0 ? h : 0;
     }
 }
@@ -84,14 +84,10 @@ static uint32_t lpit_read(void *ctx, uint32_t off, unsigned width)
     if (off >= 0x20u && off < 0x60u) {
         const unsigned ch = (off - 0x20u) / 0x10u;
         switch ((off - 0x20u) % 0x10u) {
-        case 0x0u:
-            return m->tval[ch];
-        case 0x4u:
-            return cval(m, ch);
-        case 0x8u:
-            return m->tctrl[ch];
-        default:
-            return 0u;
+        case 0x0u: return m->tval[ch];
+        case 0x4u: return cval(m, ch);
+        case 0x8u: return m->tctrl[ch];
+        default: return 0u;
         }
     }
     return 0u;
@@ -127,8 +123,7 @@ static void lpit_write(void *ctx, uint32_t off, uint32_t v, unsigned width)
             schedule(m, ch);
             break;
         }
-        default:
-            break;
+        default: break;
         }
     }
 }

@@ -50,15 +50,13 @@ int s32k_gpio_input(hal_pin_t pin, enum s32k_pin_pull pull);
 static inline void s32k_gpio_write(hal_pin_t pin, bool level)
 {
     const uint32_t port = S32K_PIN_PORT(pin);
-    s32k_mmio_write32(level ? S32K_GPIO_PSOR(port) : S32K_GPIO_PCOR(port),
-                      1u << S32K_PIN_BIT(pin));
+    s32k_mmio_write32(level ? S32K_GPIO_PSOR(port) : S32K_GPIO_PCOR(port), 1u << S32K_PIN_BIT(pin));
 }
 
 /* Level of a pin (PDIR). No check. */
 static inline bool s32k_gpio_read(hal_pin_t pin)
 {
-    return ((s32k_mmio_read32(S32K_GPIO_PDIR(S32K_PIN_PORT(pin))) >> S32K_PIN_BIT(pin)) & 1u) !=
-           0u;
+    return ((s32k_mmio_read32(S32K_GPIO_PDIR(S32K_PIN_PORT(pin))) >> S32K_PIN_BIT(pin)) & 1u) != 0u;
 }
 
 /*

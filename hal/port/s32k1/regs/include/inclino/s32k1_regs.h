@@ -37,7 +37,7 @@
 #define S32K_SCG_DIVCORE_SHIFT 16u /* divide by value + 1 */
 #define S32K_SCG_DIVBUS_SHIFT 4u
 #define S32K_SCG_DIVSLOW_SHIFT 0u
-#define S32K_SCG_CCR(scs, core, bus, slow)                                            \
+#define S32K_SCG_CCR(scs, core, bus, slow)                                                   \
     (((uint32_t)(scs) << 24) | ((uint32_t)((core)-1u) << 16) | ((uint32_t)((bus)-1u) << 4) | \
      (uint32_t)((slow)-1u))
 
@@ -67,9 +67,9 @@
 #define S32K_PCC_LPIT (S32K_PCC_BASE + 0x0DCu)
 #define S32K_PCC_PORTA (S32K_PCC_BASE + 0x124u)
 #define S32K_PCC_PORT(n) (S32K_PCC_PORTA + 4u * (uint32_t)(n)) /* PORTA..PORTE */
-#define S32K_PCC_CGC (1u << 30)                              /* clock gate control */
-#define S32K_PCC_PR (1u << 31)                               /* peripheral present (read) */
-#define S32K_PCC_PCS_SHIFT 24u                               /* functional clock source [26:24] */
+#define S32K_PCC_CGC (1u << 30)                                /* clock gate control */
+#define S32K_PCC_PR (1u << 31)                                 /* peripheral present (read) */
+#define S32K_PCC_PCS_SHIFT 24u                                 /* functional clock source [26:24] */
 #define S32K_PCC_PCS_MASK (7u << 24)
 #define S32K_PCC_PCS_SOSCDIV2 1u
 #define S32K_PCC_PCS_SIRCDIV2 2u
@@ -80,9 +80,9 @@
 #define S32K_PORT_BASE(n) (0x40049000u + 0x1000u * (uint32_t)(n))
 #define S32K_PORT_PCR(n, pin) (S32K_PORT_BASE(n) + 4u * (uint32_t)(pin))
 #define S32K_PORT_ISFR(n) (S32K_PORT_BASE(n) + 0x0A0u) /* interrupt status, w1c */
-#define S32K_PORT_PCR_PS (1u << 0)                      /* pull select: 1 = up */
-#define S32K_PORT_PCR_PE (1u << 1)                      /* pull enable */
-#define S32K_PORT_PCR_MUX_SHIFT 8u                      /* [10:8]: 0 analog, 1 GPIO, 2..7 alt */
+#define S32K_PORT_PCR_PS (1u << 0)                     /* pull select: 1 = up */
+#define S32K_PORT_PCR_PE (1u << 1)                     /* pull enable */
+#define S32K_PORT_PCR_MUX_SHIFT 8u                     /* [10:8]: 0 analog, 1 GPIO, 2..7 alt */
 #define S32K_PORT_PCR_MUX_MASK (7u << 8)
 #define S32K_PORT_PCR_MUX_GPIO 1u
 #define S32K_PORT_PCR_IRQC_SHIFT 16u /* [19:16] */
