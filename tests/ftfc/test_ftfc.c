@@ -30,8 +30,8 @@ static void charge(void *ctx)
     sim_clock_advance_to(&clk, clk.now_ns + ACCESS_NS);
 }
 
-static int model_up(enum s32k_ftfc_part part, uint8_t depart, uint32_t erase_ns, uint32_t program_ns,
-                    bool map_fcfg1)
+static int model_up(enum s32k_ftfc_part part, uint8_t depart, uint32_t erase_ns,
+                    uint32_t program_ns, bool map_fcfg1)
 {
     struct sim_s32k_ftfc_cfg mc;
     sim_clock_init(&clk);

@@ -3,7 +3,7 @@
  *
  * A sensor driver cannot tell it from the bit-banged engine: the same devices, modes, frame sizes
  * and struct spi_timing minima, the same two CS policies. Every register is reached through
- * inclino/s32k_mmio.h ([NXP-S32K1-RM], LPSPI chapter; map in spi_lpspi_regs.h).
+ * inclino/s32k_mmio.h ([S32K1XXRM], LPSPI chapter; map in spi_lpspi_regs.h).
  *
  * Configuration. The engine is an LPSPI instance in master mode whose PCS0..PCS3 outputs are
  * muxed to the chip-select pins of the board; cfg.pcs_pin[k] names the hal_pin_t a device's

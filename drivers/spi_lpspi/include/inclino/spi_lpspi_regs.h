@@ -1,6 +1,6 @@
 /*
  * spi_lpspi_regs.h - the LPSPI register map of the S32K1 family, as the reference manual gives it
- * ([NXP-S32K1-RM], chapter "Low Power Serial Peripheral Interface (LPSPI)"; base addresses from
+ * ([S32K1XXRM], chapter "Low Power Serial Peripheral Interface (LPSPI)"; base addresses from
  * its memory map). Shared by the driver (spi_lpspi.c) and the register model
  * (sim/models/s32k1/lpspi), so the two cannot disagree on an offset or a bit.
  */

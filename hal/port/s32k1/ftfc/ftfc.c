@@ -5,7 +5,7 @@
 
 #define RESERVED 0xFFFFFFFFu
 
-/* D-flash bytes per DEPART code ([NXP-S32K1-RM] FlexNVM partition code tables). */
+/* D-flash bytes per DEPART code ([S32K1XXRM] FlexNVM partition code tables). */
 static const uint32_t depart_s32k144[16] = {
     0x10000u, RESERVED, RESERVED, 0x8000u, 0u,       RESERVED, RESERVED, RESERVED,
     0u,       RESERVED, 0x4000u,  0x8000u, 0x10000u, RESERVED, RESERVED, 0x10000u,

@@ -1,8 +1,8 @@
 /*
  * s32k_ftfc.h - the S32K1 flash controller (FTFC) on the FlexNVM data flash (D-flash).
  *
- * Facts ([NXP-S32K1-RM], chapters "Flash Memory Module (FTFC)" and "SIM"; sizes from the
- * [NXP-S32K1-DS] memory tables; the unconfirmed ones in docs/unconfirmed-facts.md):
+ * Facts ([S32K1XXRM], chapters "Flash Memory Module (FTFC)" and "SIM"; sizes from the
+ * [S32K1XX-DS] memory tables; the unconfirmed ones in docs/unconfirmed-facts.md):
  *   - D-flash is read at 0x10000000 (FlexNVM); S32K144: 64 KiB FlexNVM, S32K116: 32 KiB; erase
  *     sector 2 KiB; program unit a phrase of 8 bytes (command 0x07 Program Phrase), erase
  *     command 0x09 Erase Flash Sector. In FCCOB a D-flash address is 0x800000 + offset.

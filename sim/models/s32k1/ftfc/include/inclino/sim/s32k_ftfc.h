@@ -46,7 +46,7 @@ extern "C" {
 
 struct sim_s32k_ftfc_cfg {
     enum s32k_ftfc_part part; /* FlexNVM size: 64 KiB (S32K144) or 32 KiB (S32K116) */
-    uint8_t depart;      /* SIM_FCFG1 DEPART the model reports (0xF: never partitioned) */
+    uint8_t depart;           /* SIM_FCFG1 DEPART the model reports (0xF: never partitioned) */
     struct sim_clock *clk;
     uint32_t erase_ns, program_ns; /* 0: the defaults */
     bool map_fcfg1;
