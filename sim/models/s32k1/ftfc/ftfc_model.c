@@ -66,12 +66,12 @@ static bool phrase_erased(const struct sim_s32k_ftfc *m)
 static void complete(void *arg, uint64_t now)
 {
     struct sim_s32k_ftfc *m = arg;
-    bool cut = false;
     (void)now;
     m->event = 0;
     if (!m->powered) {
         m->fstat |= S32K_FTFC_FSTAT_MGSTAT0;
     } else {
+        bool cut;
         m->steps++;
         cut = m->cut_at != 0u && m->steps == m->cut_at;
         if (m->cmd == S32K_FTFC_CMD_ERASE_SECTOR) {
