@@ -68,7 +68,6 @@ int s32k_gpio_irq_enable(enum s32k_part part, hal_pin_t pin, enum hal_edge edge,
 {
     uint32_t irqc;
     uint32_t port;
-    uint32_t irq;
     if (!S32K_PIN_VALID(pin) || (part != S32K_PART_144 && part != S32K_PART_116)) {
         return INC_ERR_INVAL;
     }
@@ -90,7 +89,7 @@ int s32k_gpio_irq_enable(enum s32k_part part, hal_pin_t pin, enum hal_edge edge,
                        S32K_PORT_PCR_IRQC_MASK | S32K_PORT_PCR_ISF,
                        (irqc << S32K_PORT_PCR_IRQC_SHIFT) | S32K_PORT_PCR_ISF);
     if (enable) {
-        irq = s32k_gpio_irq_number(part, port);
+        const uint32_t irq = s32k_gpio_irq_number(part, port);
         s32k_mmio_write32(S32K_NVIC_ICPR(irq / 32u), 1u << (irq % 32u));
         s32k_mmio_write32(S32K_NVIC_ISER(irq / 32u), 1u << (irq % 32u));
     }

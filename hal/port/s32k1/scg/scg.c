@@ -56,8 +56,8 @@ static int spll_80(void)
     /* SPLL: PREDIV /1, MULT x40 -> VCO 320 MHz, SPLL_CLK 160 MHz; DIV1 /2 (80), DIV2 /4 (40). */
     s32k_mmio_write32(S32K_SCG_SPLLCSR, 0u);
     s32k_mmio_write32(S32K_SCG_SPLLDIV, (2u << S32K_SCG_DIV1_SHIFT) | (3u << S32K_SCG_DIV2_SHIFT));
-    s32k_mmio_write32(S32K_SCG_SPLLCFG, (0u << S32K_SCG_SPLLCFG_PREDIV_SHIFT) |
-                                            ((40u - 16u) << S32K_SCG_SPLLCFG_MULT_SHIFT));
+    /* PREDIV = 0 (/1): only the MULT field is non-zero */
+    s32k_mmio_write32(S32K_SCG_SPLLCFG, (40u - 16u) << S32K_SCG_SPLLCFG_MULT_SHIFT);
     s32k_mmio_write32(S32K_SCG_SPLLCSR, S32K_SCG_XCSR_EN);
     if (!poll_set(S32K_SCG_SPLLCSR, S32K_SCG_XCSR_VLD, S32K_SCG_XCSR_VLD)) {
         return INC_ERR_TIMEOUT;
