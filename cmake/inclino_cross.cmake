@@ -12,6 +12,9 @@
 #       report (<n>.stack.txt) are written next to the ELF and printed. WHOLE_LIBS are linked
 #       --whole-archive. LINK_CHECK: generous memory and no --gc-sections (inclino_all). Each image
 #       gets a CTest test image_<n> (cmake/scripts/check_image.py image). No-op on the host.
+#       Options for a board with its own run-time (boards/s32k1): SECTIONS <file>: the section
+#       script INCLUDEd instead of hal/rt's (absolute path); NO_RT_STARTUP: the board brings its
+#       own vector table and Reset_Handler (inclino_rt_startup is not linked).
 #   inclino_cross_finalize()
 #       called once at the end of the top level: the link-check image inclino_all, with every
 #       module of the global property INCLINO_FREESTANDING_MODULES linked whole.
@@ -105,7 +108,8 @@ function(inclino_link_qemu_board exe)
 endfunction()
 
 function(inclino_add_image)
-  cmake_parse_arguments(I "LINK_CHECK" "NAME" "SOURCES;LIBS;WHOLE_LIBS;MEMORY" ${ARGN})
+  cmake_parse_arguments(I "LINK_CHECK;NO_RT_STARTUP" "NAME;SECTIONS" "SOURCES;LIBS;WHOLE_LIBS;MEMORY"
+    ${ARGN})
   if(NOT I_NAME)
     message(FATAL_ERROR "inclino_add_image: NAME is required")
   endif()
@@ -126,7 +130,11 @@ function(inclino_add_image)
   list(GET mem 2 RAM_ORIGIN)
   list(GET mem 3 RAM_KIB)
   list(GET mem 4 STACK_SIZE)
-  set(SECTIONS ${INCLINO_RT_SECTIONS})
+  if(I_SECTIONS)
+    set(SECTIONS ${I_SECTIONS})
+  else()
+    set(SECTIONS ${INCLINO_RT_SECTIONS})
+  endif()
   set(IMAGE ${img})
   set(ld ${CMAKE_CURRENT_BINARY_DIR}/${img}.ld)
   file(CONFIGURE OUTPUT ${ld} @ONLY CONTENT [=[
@@ -141,7 +149,9 @@ INCLUDE @SECTIONS@
 ]=])
 
   add_executable(${img} ${I_SOURCES})
-  target_link_libraries(${img} PRIVATE inclino_rt_startup)
+  if(NOT I_NO_RT_STARTUP)
+    target_link_libraries(${img} PRIVATE inclino_rt_startup)
+  endif()
   if(I_WHOLE_LIBS)
     # The archives by path between --whole-archive/--no-whole-archive: every object of every
     # module is linked. ($<LINK_LIBRARY:WHOLE_ARCHIVE> refuses a library that also comes in
@@ -162,8 +172,12 @@ INCLUDE @SECTIONS@
   if(I_LINK_CHECK)
     target_link_options(${img} PRIVATE "LINKER:--no-gc-sections")
   endif()
-  set_property(TARGET ${img} APPEND PROPERTY LINK_DEPENDS ${ld}
-    ${INCLINO_RT_LD_DIR}/${INCLINO_RT_SECTIONS})
+  if(I_SECTIONS)
+    set_property(TARGET ${img} APPEND PROPERTY LINK_DEPENDS ${ld} ${I_SECTIONS})
+  else()
+    set_property(TARGET ${img} APPEND PROPERTY LINK_DEPENDS ${ld}
+      ${INCLINO_RT_LD_DIR}/${INCLINO_RT_SECTIONS})
+  endif()
   _inclino_cross_postlink(${img} PRINT)
 
   set(dir $<TARGET_FILE_DIR:${img}>)

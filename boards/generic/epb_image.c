@@ -91,22 +91,15 @@ static struct app app;
 static struct app_face faces[CAL_FACES];
 static struct calrec rec;
 
-static int sensor_up(const struct hal *hal)
+static int sensor_up(const struct epb_image_board *b)
 {
-    static const struct spi_bitbang_cfg sc = {NULL, EPB_PIN_SCLK, EPB_PIN_MOSI, EPB_PIN_MISO};
-    struct spi_bitbang_cfg c = sc;
     struct adis_imu_cfg ic;
     int err;
-    c.hal = hal;
-    err = spi_bitbang_init(&spi, &c);
-    if (err != INC_OK) {
-        return err;
-    }
-    ic.hal = hal;
-    ic.bus = &spi.bus;
-    ic.cs = EPB_PIN_CS;
+    ic.hal = b->hal;
+    ic.bus = b->spi;
+    ic.cs = b->cs;
     ic.variant = (uint8_t)ADIS_IMU_ANY;
-    ic.dr_pin = EPB_PIN_DR;
+    ic.dr_pin = b->dr;
     ic.dr_line = (uint8_t)ADIS_IMU_DR_DIO1;
     ic.dr_active_low = false;
     ic.reset_at_init = false;
@@ -138,6 +131,25 @@ static void diag_serve(void)
 
 void epb_image_run(const struct hal *hal)
 {
+    static const struct spi_bitbang_cfg sc = {NULL, EPB_PIN_SCLK, EPB_PIN_MOSI, EPB_PIN_MISO};
+    struct spi_bitbang_cfg c = sc;
+    struct epb_image_board b;
+    c.hal = hal;
+    b.hal = hal;
+    b.spi = &spi.bus;
+    b.cs = EPB_PIN_CS;
+    b.dr = EPB_PIN_DR;
+    b.per_result = NULL;
+    if (spi_bitbang_init(&spi, &c) != INC_OK) {
+        for (;;) {
+        }
+    }
+    epb_image_run_on(&b);
+}
+
+void epb_image_run_on(const struct epb_image_board *board)
+{
+    const struct hal *hal = board->hal;
     static const struct calstore_config fc = {&epb_flash_none, NULL,
                                               EPB_FLASH_PAGE,  EPB_FLASH_PROG,
                                               CALSTORE_ERASED, {EPB_FLASH_SLOT0, EPB_FLASH_SLOT1},
@@ -149,7 +161,7 @@ void epb_image_run(const struct hal *hal)
     (void)app_cfg_default(&cfg, adis_imu_sample_rate_msps(ADIS_IMU_SMPL_PRD_DEFAULT));
     for (;;) {
         unsigned i;
-        if (sensor_up(hal) != INC_OK || calstore_init(&store, &fc) != INC_OK ||
+        if (sensor_up(board) != INC_OK || calstore_init(&store, &fc) != INC_OK ||
             app_init(&app, &cfg, &sensor, &store) != INC_OK) {
             hal_delay_ms(hal, EPB_RETRY_MS);
             continue;
@@ -169,6 +181,9 @@ void epb_image_run(const struct hal *hal)
             }
             epb_output.temp_c = r.temp_c;
             epb_output_count = epb_output_count + 1u;
+            if (board->per_result != NULL) {
+                board->per_result();
+            }
             if (epb_diag.cmd != EPB_DIAG_NONE) {
                 diag_serve();
                 app_restart(&app);

@@ -7,8 +7,24 @@
 #define INCLINO_EPB_IMAGE_H
 
 #include "inclino/hal.h"
+#include "inclino/spi.h"
 
-/* Run the EPB application on hal; never returns. */
+/* What a board gives the EPB application: its HAL, the SPI bus the ADIS part is on (any engine),
+ * the part's chip select and data-ready pins, and a hook called once per result (NULL: none;
+ * the S32K1 boards refresh their watchdog there). */
+struct epb_image_board {
+    const struct hal *hal;
+    const struct spi_bus *spi;
+    hal_pin_t cs;
+    hal_pin_t dr;
+    void (*per_result)(void);
+};
+
+/* Run the EPB application on a board; never returns. */
+void epb_image_run_on(const struct epb_image_board *board);
+
+/* Run the EPB application on hal with the generic board's placeholder pins and the bit-banged
+ * engine; never returns. */
 void epb_image_run(const struct hal *hal);
 
 #endif /* INCLINO_EPB_IMAGE_H */

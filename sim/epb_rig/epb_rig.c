@@ -5,6 +5,9 @@
 #include <stddef.h>
 #include <string.h>
 
+#include "inclino/s32k_wdog.h"
+#include "inclino/sim/s32k_bus.h"
+
 #define PI 3.14159265358979323846
 #define DEG (PI / 180.0)
 
@@ -276,6 +279,137 @@ int epb_rig_init(struct epb_rig *r, enum epb_rig_part part, const struct sim_cal
     return INC_OK;
 }
 
+static void s32k_port_isr0(void *arg)
+{
+    s32k_board_port_isr(arg, 0u);
+}
+static void s32k_port_isr1(void *arg)
+{
+    s32k_board_port_isr(arg, 1u);
+}
+static void s32k_port_isr2(void *arg)
+{
+    s32k_board_port_isr(arg, 2u);
+}
+static void s32k_port_isr3(void *arg)
+{
+    s32k_board_port_isr(arg, 3u);
+}
+static void s32k_port_isr4(void *arg)
+{
+    s32k_board_port_isr(arg, 4u);
+}
+static void s32k_lpit_isr(void *arg)
+{
+    s32k_board_lpit_isr(arg);
+}
+
+int epb_rig_set_board(struct epb_rig *r, enum epb_rig_board board)
+{
+    return epb_rig_set_board_spi(r, board, false);
+}
+
+/* LPSPI0's model on the rig's wires: SCK/SOUT/SIN on sclk/mosi/miso, the part's PCS on cs0. */
+static int rig_lpspi_up(struct epb_rig *r, const struct s32k_board_desc *d)
+{
+    const struct s32k_board_pins *p = &d->pins;
+    const uint8_t pcs = r->info->adis ? p->cs_imu_pcs : p->cs_acc_pcs;
+    struct sim_s32k_lpspi_cfg mc;
+    unsigned k;
+    if (pcs >= SIM_LPSPI_PCS) {
+        return INC_ERR_UNSUPPORTED;
+    }
+    mc.base = LPSPI0_BASE;
+    mc.fclk_hz = d->clock == S32K_CLOCK_SPLL_80 ? S32K_BOARD_LPSPI_SPLL_HZ : S32K_FIRCDIV2_HZ;
+    mc.clk = &r->board.clk;
+    mc.bus = &r->board.bus;
+    mc.sck = SIM_BOARD_SCLK;
+    mc.sout = SIM_BOARD_MOSI;
+    mc.sin = SIM_BOARD_MISO;
+    for (k = 0; k < SIM_LPSPI_PCS; k++) {
+        mc.pcs[k] = SIM_LPSPI_NO_PIN;
+    }
+    mc.pcs[pcs] = SIM_BOARD_CS(0);
+    return sim_s32k_lpspi_init(&r->s32k_lpspi, &mc);
+}
+
+int epb_rig_set_board_spi(struct epb_rig *r, enum epb_rig_board board, bool lpspi)
+{
+    static const sim_s32k_isr port_isr[S32K_PORT_COUNT] = {
+        s32k_port_isr0, s32k_port_isr1, s32k_port_isr2, s32k_port_isr3, s32k_port_isr4};
+    const struct s32k_board_desc *d = &s32k_board_s32k144evb;
+    const struct s32k_board_pins *p = &d->pins;
+    unsigned i;
+    int err;
+    if (r == NULL) {
+        return INC_ERR_NULL;
+    }
+    if (board == EPB_RIG_BOARD_SIM) {
+        if (lpspi) {
+            return INC_ERR_INVAL;
+        }
+        r->mcu = board;
+        return INC_OK;
+    }
+    if (board != EPB_RIG_BOARD_S32K144) {
+        return INC_ERR_INVAL;
+    }
+    s32k_bus_reset();
+    err = sim_s32k_core_init(&r->s32k_core, &r->board.clk);
+    if (err == INC_OK) {
+        err = sim_s32k_lpit_init(&r->s32k_lpit, &r->board.clk, &r->s32k_core, d->part, S32K_TIME_HZ,
+                                 SIM_S32K_ACCESS_NS_DEFAULT);
+    }
+    if (err == INC_OK) {
+        err = sim_s32k_port_gpio_init(&r->s32k_gpio, &r->board.bus, &r->s32k_core, d->part);
+    }
+    /* The EVB's sensor header on the rig's wires: the part under test is on cs0/dr0. */
+    if (err == INC_OK) {
+        err = sim_s32k_port_gpio_connect(&r->s32k_gpio, p->sclk, SIM_BOARD_SCLK);
+    }
+    if (err == INC_OK) {
+        err = sim_s32k_port_gpio_connect(&r->s32k_gpio, p->mosi, SIM_BOARD_MOSI);
+    }
+    if (err == INC_OK) {
+        err = sim_s32k_port_gpio_connect(&r->s32k_gpio, p->miso, SIM_BOARD_MISO);
+    }
+    if (err == INC_OK) {
+        err = sim_s32k_port_gpio_connect(&r->s32k_gpio, r->info->adis ? p->cs_imu : p->cs_acc,
+                                         SIM_BOARD_CS(0));
+    }
+    if (err == INC_OK) {
+        err = sim_s32k_port_gpio_connect(&r->s32k_gpio, r->info->adis ? p->cs_acc : p->cs_imu,
+                                         SIM_BOARD_CS(1));
+    }
+    if (err == INC_OK) {
+        err = sim_s32k_port_gpio_connect(&r->s32k_gpio, r->info->adis ? p->dr_imu : p->dr_acc,
+                                         SIM_BOARD_DR(0));
+    }
+    if (err == INC_OK) {
+        err = sim_s32k_port_gpio_connect(&r->s32k_gpio, p->rst_imu, SIM_BOARD_RST(0));
+    }
+    if (err != INC_OK) {
+        return err;
+    }
+    for (i = 0; i < S32K_PORT_COUNT; i++) {
+        sim_s32k_core_set_handler(&r->s32k_core, S32K144_IRQ_PORTA + i, port_isr[i], &r->s32k);
+    }
+    sim_s32k_core_set_handler(&r->s32k_core, S32K144_IRQ_LPIT0_CH1, s32k_lpit_isr, &r->s32k);
+    /* What the startup does first, then the board's bring-up. */
+    err = s32k_wdog_init(true);
+    if (err == INC_OK && lpspi) {
+        err = rig_lpspi_up(r, d);
+    }
+    if (err == INC_OK) {
+        err = s32k_board_init(&r->s32k, d, lpspi ? S32K_BOARD_SPI_LPSPI : S32K_BOARD_SPI_BITBANG,
+                              true);
+    }
+    if (err == INC_OK) {
+        r->mcu = board;
+    }
+    return err;
+}
+
 uint32_t epb_rig_rate_mhz(const struct epb_rig *r)
 {
     return (uint32_t)(r->info->rate_sps * 1000.0 + 0.5);
@@ -284,21 +418,33 @@ uint32_t epb_rig_rate_mhz(const struct epb_rig *r)
 int epb_rig_power_up(struct epb_rig *r, const struct app_cfg *cfg)
 {
     struct calstore_config sc;
+    const struct hal *fw_hal;
+    const struct spi_bus *fw_bus;
+    hal_pin_t fw_cs = SIM_BOARD_CS(0);
+    hal_pin_t fw_dr = SIM_BOARD_DR(0);
     int err;
     if (r == NULL || cfg == NULL) {
         return INC_ERR_NULL;
     }
+    fw_hal = &r->board.hal;
+    fw_bus = &r->board.spi.bus;
     memset(&r->imu, 0, sizeof(r->imu));
     memset(&r->sca_dev, 0, sizeof(r->sca_dev));
     memset(&r->app, 0, sizeof(r->app));
+    if (r->mcu == EPB_RIG_BOARD_S32K144) {
+        fw_hal = &r->s32k.hal;
+        fw_bus = r->s32k.spi;
+        fw_cs = r->info->adis ? r->s32k.desc->pins.cs_imu : r->s32k.desc->pins.cs_acc;
+        fw_dr = r->s32k.desc->pins.dr_imu;
+    }
     if (r->info->adis) {
         struct adis_imu_cfg c;
         memset(&c, 0, sizeof(c));
-        c.hal = &r->board.hal;
-        c.bus = &r->board.spi.bus;
-        c.cs = SIM_BOARD_CS(0);
+        c.hal = fw_hal;
+        c.bus = fw_bus;
+        c.cs = fw_cs;
         c.variant = (uint8_t)r->info->sim_variant; /* same order in both enums */
-        c.dr_pin = SIM_BOARD_DR(0);
+        c.dr_pin = fw_dr;
         c.dr_line = (uint8_t)ADIS_IMU_DR_DIO1;
         err = adis_imu_init(&r->imu, &c);
         if (err == INC_OK) {
@@ -314,10 +460,10 @@ int epb_rig_power_up(struct epb_rig *r, const struct app_cfg *cfg)
     } else {
         struct sca3000_cfg c;
         memset(&c, 0, sizeof(c));
-        c.bus = &r->board.spi.bus;
-        c.cs = SIM_BOARD_CS(0);
+        c.bus = fw_bus;
+        c.cs = fw_cs;
         c.variant = (enum sca3000_variant)r->info->sim_variant; /* same order */
-        c.hal = &r->board.hal;
+        c.hal = fw_hal;
         c.int_pin = HAL_PIN_NONE;
         err = sca3000_init(&r->sca_dev, &c);
         r->sensor.ops = &sca3000_sensor_ops;

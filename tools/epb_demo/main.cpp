@@ -64,6 +64,8 @@ struct Options {
     double t_cold = -20.0, t_hot = 60.0;
     std::string csv, est_csv, vcd, record_out;
     double vcd_ms = 10.0;
+    std::string board; // "" / "sim": the simulated board; "s32k144": through the S32K1 port
+    std::string spi = "bitbang";
 };
 
 void usage()
@@ -75,6 +77,9 @@ void usage()
         "  --slope-deg DEG     road slope in degrees instead of --grade\n"
         "  --roll-deg DEG      cross slope (default 0)\n"
         "  --temp C            temperature of the parked car, degC (default 25)\n"
+        "  --board NAME        sim (default) or s32k144: the firmware runs through the S32K1 port\n"
+        "                      (hal/port/s32k1) against its register models (docs/boards.md)\n"
+        "  --spi NAME          with --board s32k144: bitbang (default) or lpspi\n"
         "  --part NAME         adis16405 (default), adis16400, adis16364, adis16362, sca3000-d01,\n"
         "                      sca3000-e02\n"
         "  --part-seed N       errors of a part drawn from seed N (default 0: part A, [ADI-EPB]/[TEMP-LORENTZ])\n"
@@ -131,6 +136,10 @@ bool parse(int argc, char **argv, Options &o)
             ok = take(-30.0, 30.0, o.roll_deg);
         else if (a == "--temp")
             ok = take(-40.0, 125.0, o.temp_c);
+        else if (a == "--board")
+            ok = text(o.board);
+        else if (a == "--spi")
+            ok = text(o.spi);
         else if (a == "--part")
             ok = text(o.part);
         else if (a == "--part-seed") {
@@ -262,6 +271,26 @@ int main(int argc, char **argv)
     if (err != INC_OK) {
         std::fprintf(stderr, "epb_demo: rig set-up failed (%s)\n", inc_err_name(err));
         return tool_summary_error(inc_err_name(err), 2);
+    }
+    if (!o.board.empty()) {
+        tool_summary_add("board", "%s", o.board.c_str());
+        tool_summary_add("spi", "%s", o.spi.c_str());
+        if (o.board == "s32k144" && o.spi == "bitbang") {
+            err = epb_rig_set_board(rig, EPB_RIG_BOARD_S32K144);
+        } else if (o.board == "s32k144" && o.spi == "lpspi") {
+            err = epb_rig_set_board_spi(rig, EPB_RIG_BOARD_S32K144, true);
+        } else if (o.board == "sim" && o.spi == "bitbang") {
+            err = epb_rig_set_board(rig, EPB_RIG_BOARD_SIM);
+        } else {
+            std::fprintf(stderr, "epb_demo: unknown --board/--spi '%s'/'%s'\n", o.board.c_str(),
+                         o.spi.c_str());
+            usage();
+            return tool_summary_error("usage", 2);
+        }
+        if (err != INC_OK) {
+            std::fprintf(stderr, "epb_demo: board set-up failed (%s)\n", inc_err_name(err));
+            return tool_summary_error(inc_err_name(err), 2);
+        }
     }
     const epb_rig_part_info *pi = epb_rig_info(rig);
     tool_summary_add("part", "%s", pi->name);

@@ -10,7 +10,12 @@
 #include "inclino/sim/adis_imu.h"
 #include "inclino/sim/board.h"
 #include "inclino/sim/epb_rig.h"
+#include "inclino/sim/s32k_core.h"
+#include "inclino/sim/s32k_lpit.h"
+#include "inclino/sim/s32k_lpspi.h"
+#include "inclino/sim/s32k_port_gpio.h"
 #include "inclino/sim/sca3000.h"
+#include "inclino/s32k_board.h"
 #include "inclino/simflash.h"
 
 struct epb_rig_bump {
@@ -42,6 +47,13 @@ struct epb_rig {
     struct epb_rig_bump bumps[EPB_RIG_BUMPS];
     unsigned bump_count, bump_total;
     double last_pitch_deg; /* true pitch of the last physics sample (base + rocking) */
+    /* the MCU board the firmware runs on (epb_rig_set_board) */
+    enum epb_rig_board mcu;
+    struct sim_s32k_core s32k_core;
+    struct sim_s32k_lpit s32k_lpit;
+    struct sim_s32k_port_gpio s32k_gpio;
+    struct sim_s32k_lpspi s32k_lpspi; /* mapped when the board runs LPSPI */
+    struct s32k_board s32k;
     /* firmware side (re-created at every power-up) */
     struct adis_imu imu;
     struct sca3000 sca_dev;

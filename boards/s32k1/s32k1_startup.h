@@ -1,0 +1,30 @@
+/*
+ * s32k1_startup.h - what the S32K1 boards' startup (startup_s32k1.c) and vector tables
+ * (boards/<board>/vectors.c) share. Not a module header: compiled into the images only.
+ */
+#ifndef INCLINO_S32K1_STARTUP_H
+#define INCLINO_S32K1_STARTUP_H
+
+#include <stdint.h>
+
+/* Linker-script symbols (s32k1-sections.ld). */
+extern uint32_t __data_load__[];
+extern uint32_t __data_start__[];
+extern uint32_t __data_end__[];
+extern uint32_t __bss_start__[];
+extern uint32_t __bss_end__[];
+extern uint32_t __stack_top__[];
+
+typedef void (*s32k1_handler)(void);
+
+/* Vector table: initial SP, then 15 core exceptions and the part's IRQs (<= 123). */
+struct s32k1_vector_table {
+    const uint32_t *initial_sp;
+    s32k1_handler handler[15 + S32K1_IRQS];
+};
+
+void Reset_Handler(void);
+void Default_Handler(void);
+int main(void);
+
+#endif /* INCLINO_S32K1_STARTUP_H */
