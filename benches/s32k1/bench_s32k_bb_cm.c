@@ -35,6 +35,8 @@ static uint32_t ticks(void)
     return 0x00FFFFFFu - SYST_CVR;
 }
 
+/* The signature of struct spi_bitbang_fast's frame (ctx stays non-const). */
+/* cppcheck-suppress constParameter */
 __attribute__((noinline)) static uint16_t empty(void *ctx, const struct spi_bitbang_frame *fr,
                                                 bool *mosi_out)
 {
