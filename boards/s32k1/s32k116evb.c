@@ -24,5 +24,7 @@ const struct s32k_board_desc s32k_board_s32k116evb = {
         S32K_PIN(4, 4), /* can_rx  PTE4  CAN0_RX (ALT5) */
         3u,             /* LPSPI0 mux */
         5u,             /* CAN0 mux */
+        1u, /* cs_imu LPSPI0 PCS: PTB5 ALT3 = LPSPI0_PCS1 as on the S32K144 (unconfirmed for the 48-pin S32K116) */
+        S32K_BOARD_NO_PCS, /* cs_acc: no LPSPI0 PCS */
     },
 };

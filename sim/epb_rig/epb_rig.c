@@ -306,6 +306,35 @@ static void s32k_lpit_isr(void *arg)
 
 int epb_rig_set_board(struct epb_rig *r, enum epb_rig_board board)
 {
+    return epb_rig_set_board_spi(r, board, false);
+}
+
+/* LPSPI0's model on the rig's wires: SCK/SOUT/SIN on sclk/mosi/miso, the part's PCS on cs0. */
+static int rig_lpspi_up(struct epb_rig *r, const struct s32k_board_desc *d)
+{
+    const struct s32k_board_pins *p = &d->pins;
+    const uint8_t pcs = r->info->adis ? p->cs_imu_pcs : p->cs_acc_pcs;
+    struct sim_s32k_lpspi_cfg mc;
+    unsigned k;
+    if (pcs >= SIM_LPSPI_PCS) {
+        return INC_ERR_UNSUPPORTED;
+    }
+    mc.base = LPSPI0_BASE;
+    mc.fclk_hz = d->clock == S32K_CLOCK_SPLL_80 ? S32K_BOARD_LPSPI_SPLL_HZ : S32K_FIRCDIV2_HZ;
+    mc.clk = &r->board.clk;
+    mc.bus = &r->board.bus;
+    mc.sck = SIM_BOARD_SCLK;
+    mc.sout = SIM_BOARD_MOSI;
+    mc.sin = SIM_BOARD_MISO;
+    for (k = 0; k < SIM_LPSPI_PCS; k++) {
+        mc.pcs[k] = SIM_LPSPI_NO_PIN;
+    }
+    mc.pcs[pcs] = SIM_BOARD_CS(0);
+    return sim_s32k_lpspi_init(&r->s32k_lpspi, &mc);
+}
+
+int epb_rig_set_board_spi(struct epb_rig *r, enum epb_rig_board board, bool lpspi)
+{
     static const sim_s32k_isr port_isr[S32K_PORT_COUNT] = {
         s32k_port_isr0, s32k_port_isr1, s32k_port_isr2, s32k_port_isr3, s32k_port_isr4};
     const struct s32k_board_desc *d = &s32k_board_s32k144evb;
@@ -316,6 +345,9 @@ int epb_rig_set_board(struct epb_rig *r, enum epb_rig_board board)
         return INC_ERR_NULL;
     }
     if (board == EPB_RIG_BOARD_SIM) {
+        if (lpspi) {
+            return INC_ERR_INVAL;
+        }
         r->mcu = board;
         return INC_OK;
     }
@@ -365,8 +397,12 @@ int epb_rig_set_board(struct epb_rig *r, enum epb_rig_board board)
     sim_s32k_core_set_handler(&r->s32k_core, S32K144_IRQ_LPIT0_CH1, s32k_lpit_isr, &r->s32k);
     /* What the startup does first, then the board's bring-up. */
     err = s32k_wdog_init(true);
+    if (err == INC_OK && lpspi) {
+        err = rig_lpspi_up(r, d);
+    }
     if (err == INC_OK) {
-        err = s32k_board_init(&r->s32k, d, S32K_BOARD_SPI_BITBANG, true);
+        err = s32k_board_init(&r->s32k, d, lpspi ? S32K_BOARD_SPI_LPSPI : S32K_BOARD_SPI_BITBANG,
+                              true);
     }
     if (err == INC_OK) {
         r->mcu = board;

@@ -32,7 +32,41 @@
 #include <stdio.h>
 #include <string.h>
 
+#ifdef CONFORMANCE_LPSPI
+#include "inclino/sim/s32k_lpspi_rig.h"
+#endif
+
 static struct sim_bench bench;
+
+/* The SPI engine under test: the board's bit-banged engine, or (test conformance_lpspi) the
+ * S32K1 LPSPI engine through its register model on the same pins. Same drivers, same models,
+ * same expectations. */
+#ifdef CONFORMANCE_LPSPI
+static struct sim_lpspi_rig rig;
+#define ENGINE_NAME "lpspi"
+#else
+#define ENGINE_NAME "bitbang"
+#endif
+
+static int bench_init(void)
+{
+    int err = sim_bench_init(&bench);
+#ifdef CONFORMANCE_LPSPI
+    if (err == INC_OK) {
+        err = sim_lpspi_rig_init(&rig, &bench.board, 0);
+    }
+#endif
+    return err;
+}
+
+static const struct spi_bus *conf_bus(void)
+{
+#ifdef CONFORMANCE_LPSPI
+    return &rig.engine.bus;
+#else
+    return &bench.board.spi.bus;
+#endif
+}
 static struct adis16255 g16;
 static struct adis16255_cfg g16c;
 static struct adis_imu imu;
@@ -109,7 +143,7 @@ static void no_violations(void)
 static void a16_cfg(void)
 {
     memset(&g16c, 0, sizeof(g16c));
-    g16c.bus = &bench.board.spi.bus;
+    g16c.bus = conf_bus();
     g16c.hal = &bench.board.hal;
     g16c.cs = SIM_BOARD_CS(0);
     g16c.dr_pin = SIM_BOARD_DR(0);
@@ -125,7 +159,7 @@ static int a16_setup(void)
 {
     struct sim_adis16255_cfg mc;
     struct sim_inertial_input in;
-    int err = sim_bench_init(&bench);
+    int err = bench_init();
     if (err != INC_OK) {
         return err;
     }
@@ -158,7 +192,7 @@ static void imu_cfg(enum sim_adis_imu_variant v)
 {
     memset(&imuc, 0, sizeof(imuc));
     imuc.hal = &bench.board.hal;
-    imuc.bus = &bench.board.spi.bus;
+    imuc.bus = conf_bus();
     imuc.cs = SIM_BOARD_CS(0);
     imuc.variant = (uint8_t)v; /* same order in both enums */
     imuc.dr_pin = SIM_BOARD_DR(0);
@@ -168,7 +202,7 @@ static void imu_cfg(enum sim_adis_imu_variant v)
 static int imu_setup_variant(enum sim_adis_imu_variant v)
 {
     struct sim_adis_imu_cfg mc;
-    int err = sim_bench_init(&bench);
+    int err = bench_init();
     if (err != INC_OK) {
         return err;
     }
@@ -215,14 +249,14 @@ static enum sca3000_variant sca_variant(enum sim_sca3000_variant v)
 static int sca_setup_variant(enum sim_sca3000_variant v)
 {
     struct sim_sca3000_cfg mc;
-    int err = sim_bench_init(&bench);
+    int err = bench_init();
     if (err != INC_OK) {
         return err;
     }
     sim_bench_sca3000_cfg(&bench.board, 0, v, &mc);
     err = sim_bench_add_sca3000(&bench, &mc);
     memset(&scac, 0, sizeof(scac));
-    scac.bus = &bench.board.spi.bus;
+    scac.bus = conf_bus();
     scac.cs = SIM_BOARD_CS(0);
     scac.spi_mode0 = false; /* mode 3; the driver builds its own 8-bit frames and timing */
     scac.variant = sca_variant(v);
@@ -675,6 +709,7 @@ static void test_faults_clear(void)
 
 int main(void)
 {
+    printf("engine: %s\n", ENGINE_NAME);
     UNIT_RUN(test_sweep_adis16255);
     UNIT_RUN(test_sweep_adis_imu);
     UNIT_RUN(test_sweep_sca3000);

@@ -15,6 +15,7 @@
 #include "inclino/sim/s32k_bus.h"
 #include "inclino/sim/s32k_core.h"
 #include "inclino/sim/s32k_lpit.h"
+#include "inclino/sim/s32k_lpspi.h"
 #include "inclino/sim/s32k_port_gpio.h"
 #include "unit.h"
 
@@ -24,6 +25,7 @@ static struct sim_s32k_core core;
 static struct sim_s32k_lpit lpit;
 static struct sim_s32k_port_gpio gpio;
 static struct s32k_board board;
+static struct sim_s32k_lpspi lpspi;
 static unsigned edges;
 
 enum { L_SCLK, L_MOSI, L_MISO, L_CS, L_DR };
@@ -82,8 +84,32 @@ static void test_pins(void)
     CHECK(hal_pin_read(&board.hal, p->miso)); /* pull-up of the line */
     sim_pinbus_device_drive(&bus, (unsigned)sim_pinbus_add_device(&bus), L_MISO, false);
     CHECK(!hal_pin_read(&board.hal, p->miso));
-    CHECK_EQ_INT(s32k_board_init(&board, &s32k_board_s32k144evb, S32K_BOARD_SPI_LPSPI, true),
-                 INC_ERR_UNSUPPORTED);
+    /* LPSPI: without the LPSPI0 model nothing answers PARAM (unsupported); with it the engine
+     * serves the board's bus, the ADIS CS on PCS1 (PTB5 ALT3) and parked high. */
+    {
+        struct sim_s32k_lpspi_cfg lc;
+        unsigned k;
+        memset(&lc, 0, sizeof(lc));
+        lc.base = LPSPI0_BASE;
+        lc.fclk_hz = S32K_BOARD_LPSPI_SPLL_HZ;
+        lc.clk = &clk;
+        lc.bus = &bus;
+        lc.sck = L_SCLK;
+        lc.sout = L_MOSI;
+        lc.sin = L_MISO;
+        for (k = 0; k < SIM_LPSPI_PCS; k++) {
+            lc.pcs[k] = SIM_LPSPI_NO_PIN;
+        }
+        lc.pcs[p->cs_imu_pcs] = L_CS;
+        CHECK_OK(sim_s32k_lpspi_init(&lpspi, &lc));
+        CHECK_OK(s32k_board_init(&board, &s32k_board_s32k144evb, S32K_BOARD_SPI_LPSPI, true));
+        CHECK(board.spi == &board.lp.bus);
+        CHECK_EQ_INT(board.lp.fifo_words, 4);
+        CHECK_EQ_INT(lpspi.locked_writes, 0);
+        CHECK(sim_pinbus_read(&bus, L_CS));
+    }
+    CHECK_EQ_INT(s32k_board_init(&board, &s32k_board_s32k144evb, (enum s32k_board_spi)7, true),
+                 INC_ERR_INVAL);
     CHECK_EQ_INT((int)s32k_bus_stats()->unmapped_reads, 0);
     CHECK_EQ_INT((int)s32k_bus_stats()->unmapped_writes, 0);
 }

@@ -288,7 +288,7 @@ int main(int argc, char **argv)
         if (o.board == "s32k144" && o.spi == "bitbang") {
             err = epb_rig_set_board(rig, EPB_RIG_BOARD_S32K144);
         } else if (o.board == "s32k144" && o.spi == "lpspi") {
-            err = INC_ERR_UNSUPPORTED; /* the LPSPI engine is not wired in (docs/boards.md) */
+            err = epb_rig_set_board_spi(rig, EPB_RIG_BOARD_S32K144, true);
         } else if (o.board == "sim" && o.spi == "bitbang") {
             err = epb_rig_set_board(rig, EPB_RIG_BOARD_SIM);
         } else {

@@ -7,8 +7,10 @@
  * The SPI engine is a choice of the board (enum s32k_board_spi): the bit-banged engine
  * (drivers/spi, over the GPIO pins) or LPSPI, the hardware SPI (drivers/spi_lpspi, on the same
  * pins in their LPSPI mux). Both serve struct spi_bus, so the drivers cannot tell them apart.
- * LPSPI is a seam here: s32k_board_init returns INC_ERR_UNSUPPORTED for it until the LPSPI
- * engine is wired in (docs/boards.md, "SPI engine").
+ * With LPSPI, SCK/SOUT/SIN and every chip select that is an LPSPI0 PCS pin (cs_imu_pcs,
+ * cs_acc_pcs) are muxed to LPSPI0, clocked from SPLLDIV2 (40 MHz) or FIRCDIV2 (24 MHz) by the
+ * board's clock; a chip select without a PCS stays a GPIO held high, and a device on it is
+ * refused by the engine (INC_ERR_INVAL at spi_dev_init) (docs/boards.md, "SPI engine").
  */
 #ifndef INCLINO_S32K_BOARD_H
 #define INCLINO_S32K_BOARD_H
@@ -23,6 +25,7 @@
 #include "inclino/s32k_scg.h"
 #include "inclino/spi.h"
 #include "inclino/spi_bitbang.h"
+#include "inclino/spi_lpspi.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -44,7 +47,12 @@ struct s32k_board_pins {
     hal_pin_t can_tx, can_rx;   /* CAN0 to the board's transceiver */
     uint8_t lpspi_mux;          /* PCR.MUX of sclk/mosi/miso for LPSPI0 */
     uint8_t can_mux;            /* PCR.MUX of can_tx/can_rx for CAN0 */
+    uint8_t cs_imu_pcs;         /* LPSPI0 PCS index of cs_imu in lpspi_mux, or S32K_BOARD_NO_PCS */
+    uint8_t cs_acc_pcs;         /* LPSPI0 PCS index of cs_acc in lpspi_mux, or S32K_BOARD_NO_PCS */
 };
+
+#define S32K_BOARD_NO_PCS 0xFFu
+#define S32K_BOARD_LPSPI_SPLL_HZ 40000000u /* SPLLDIV2 of S32K_CLOCK_SPLL_80 (s32k_scg.h) */
 
 struct s32k_board_desc {
     const char *name; /* "s32k144evb", "s32k116evb" */
@@ -63,15 +71,16 @@ struct s32k_board {
     struct hal hal;
     struct spi_bitbang bb;
     struct spi_bitbang_fast fast; /* the port's inlined bit loop for bb (s32k_board_bb_frame) */
-    const struct spi_bus *spi;    /* the engine chosen */
+    struct spi_lpspi lp;
+    const struct spi_bus *spi; /* the engine chosen */
 };
 
 /*
  * Bring the board up: clocks (desc->clock), PORT clocks, pins (SPI and CS outputs idle high,
  * RST high, data-ready inputs, CAN pins muxed), the HAL port (refreshing the watchdog when
  * `watchdog`: the startup enabled it) and the SPI engine. The watchdog itself is configured by
- * the startup (s32k_wdog_init), before this. Returns 0, INC_ERR_NULL, INC_ERR_UNSUPPORTED
- * (LPSPI not wired in) or the first error of the parts.
+ * the startup (s32k_wdog_init), before this. Returns 0, INC_ERR_NULL, INC_ERR_INVAL (spi) or
+ * the first error of the parts (the LPSPI engine's included).
  */
 int s32k_board_init(struct s32k_board *b, const struct s32k_board_desc *desc,
                     enum s32k_board_spi spi, bool watchdog);

@@ -126,8 +126,14 @@ int epb_rig_power_up(struct epb_rig *r, const struct app_cfg *cfg);
 enum epb_rig_board { EPB_RIG_BOARD_SIM = 0, EPB_RIG_BOARD_S32K144 = 1 };
 
 /* Choose the board (after epb_rig_init, before the first epb_rig_power_up). 0 or an error of
- * the models or of the board's bring-up (INC_ERR_UNSUPPORTED: SPI engine not wired in). */
+ * the models or of the board's bring-up. The S32K144 board's SPI engine is the bit-banged one. */
 int epb_rig_set_board(struct epb_rig *r, enum epb_rig_board board);
+
+/* The same with the SPI engine chosen: lpspi = true runs the drivers through LPSPI0
+ * (drivers/spi_lpspi) against its register model (sim/models/s32k1/lpspi) on the same wires,
+ * the part's CS on the PCS the board gives it. EPB_RIG_BOARD_SIM has no LPSPI: INC_ERR_INVAL.
+ * A part whose CS is no LPSPI0 PCS on the board (the SCA3000 on PTD3): INC_ERR_UNSUPPORTED. */
+int epb_rig_set_board_spi(struct epb_rig *r, enum epb_rig_board board, bool lpspi);
 
 /* The firmware's sample rate for this part, milli-samples/s (for app_cfg_default). */
 uint32_t epb_rig_rate_mhz(const struct epb_rig *r);

@@ -12,6 +12,7 @@
 #include "inclino/sim/epb_rig.h"
 #include "inclino/sim/s32k_core.h"
 #include "inclino/sim/s32k_lpit.h"
+#include "inclino/sim/s32k_lpspi.h"
 #include "inclino/sim/s32k_port_gpio.h"
 #include "inclino/sim/sca3000.h"
 #include "inclino/s32k_board.h"
@@ -51,6 +52,7 @@ struct epb_rig {
     struct sim_s32k_core s32k_core;
     struct sim_s32k_lpit s32k_lpit;
     struct sim_s32k_port_gpio s32k_gpio;
+    struct sim_s32k_lpspi s32k_lpspi; /* mapped when the board runs LPSPI */
     struct s32k_board s32k;
     /* firmware side (re-created at every power-up) */
     struct adis_imu imu;
