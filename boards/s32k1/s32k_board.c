@@ -4,6 +4,7 @@
 #include <stddef.h>
 
 #include "inclino/s32k_gpio.h"
+#include "inclino/s32k_mmio.h"
 
 static int pins_up(const struct s32k_board_pins *p)
 {
@@ -126,9 +127,68 @@ int s32k_board_init(struct s32k_board *b, const struct s32k_board_desc *desc,
     sc.miso = desc->pins.miso;
     err = spi_bitbang_init(&b->bb, &sc);
     if (err == INC_OK) {
+        b->fast.frame = s32k_board_bb_frame;
+        b->fast.ctx = b;
+        spi_bitbang_set_fast(&b->bb, &b->fast);
         b->spi = &b->bb.bus;
     }
     return err;
+}
+
+uint16_t s32k_board_bb_frame(void *ctx, const struct spi_bitbang_frame *fr, bool *mosi_out)
+{
+    struct s32k_board *b = ctx;
+    const struct s32k_board_pins *pins = &b->desc->pins;
+    const uint32_t sclk_mask = 1u << S32K_PIN_BIT(pins->sclk);
+    const uint32_t mosi_mask = 1u << S32K_PIN_BIT(pins->mosi);
+    const uint32_t miso_bit = S32K_PIN_BIT(pins->miso);
+    /* SCLK's leading and trailing edges: the register each writes (PSOR sets, PCOR clears). */
+    const uint32_t lead_reg = fr->idle ? S32K_GPIO_PCOR(S32K_PIN_PORT(pins->sclk))
+                                       : S32K_GPIO_PSOR(S32K_PIN_PORT(pins->sclk));
+    const uint32_t trail_reg = fr->idle ? S32K_GPIO_PSOR(S32K_PIN_PORT(pins->sclk))
+                                        : S32K_GPIO_PCOR(S32K_PIN_PORT(pins->sclk));
+    const uint32_t mosi_set = S32K_GPIO_PSOR(S32K_PIN_PORT(pins->mosi));
+    const uint32_t mosi_clr = S32K_GPIO_PCOR(S32K_PIN_PORT(pins->mosi));
+    const uint32_t miso_in = S32K_GPIO_PDIR(S32K_PIN_PORT(pins->miso));
+    const uint32_t d_h1 = s32k_hal_short_prep(&b->port, fr->h1_ns);
+    const uint32_t d_h2 = s32k_hal_short_prep(&b->port, fr->h2_ns);
+    uint32_t before = s32k_hal_short_prep(&b->port, fr->lead_ns); /* first bit: the lead */
+    /* the frame's bits left-aligned in 32 bits: bit 31 is the next one out */
+    uint32_t w = fr->bits >= 1u && fr->bits <= 16u ? (uint32_t)fr->word << (32u - fr->bits) : 0u;
+    uint32_t mosi = fr->mosi_level ? 1u : 0u;
+    uint32_t in = 0u;
+    unsigned n = fr->bits <= 16u ? fr->bits : 0u;
+    if (!fr->cpha) {
+        for (; n != 0u; n--, w <<= 1) {
+            const uint32_t out = w >> 31;
+            if (out != mosi) {
+                s32k_mmio_write32(out != 0u ? mosi_set : mosi_clr, mosi_mask);
+                mosi = out;
+            }
+            s32k_hal_short_run(&b->port, before);
+            in = (in << 1) | ((s32k_mmio_read32(miso_in) >> miso_bit) & 1u);
+            s32k_mmio_write32(lead_reg, sclk_mask);
+            s32k_hal_short_run(&b->port, d_h1);
+            s32k_mmio_write32(trail_reg, sclk_mask);
+            before = d_h2;
+        }
+    } else {
+        for (; n != 0u; n--, w <<= 1) {
+            const uint32_t out = w >> 31;
+            s32k_hal_short_run(&b->port, before);
+            s32k_mmio_write32(lead_reg, sclk_mask);
+            if (out != mosi) {
+                s32k_mmio_write32(out != 0u ? mosi_set : mosi_clr, mosi_mask);
+                mosi = out;
+            }
+            s32k_hal_short_run(&b->port, d_h1);
+            in = (in << 1) | ((s32k_mmio_read32(miso_in) >> miso_bit) & 1u);
+            s32k_mmio_write32(trail_reg, sclk_mask);
+            before = d_h2;
+        }
+    }
+    *mosi_out = mosi != 0u;
+    return (uint16_t)in;
 }
 
 void s32k_board_port_isr(struct s32k_board *b, uint32_t port)

@@ -68,7 +68,22 @@ static int bb_transfer(void *ctx, struct spi_dev *dev, const uint16_t *tx, uint1
             lead = gap;
         }
 
-        for (b = bits; b-- > 0u;) {
+        if (bb->fast != NULL) {
+            struct spi_bitbang_frame fr;
+            fr.word = word;
+            fr.bits = (uint8_t)bits;
+            fr.cpha = cpha;
+            fr.idle = idle;
+            fr.mosi_level = mosi_level;
+            fr.lead_ns = lead;
+            fr.h1_ns = h1;
+            fr.h2_ns = h2;
+            in = bb->fast->frame(bb->fast->ctx, &fr, &mosi_level);
+            b = 0u; /* the bit loop below has nothing left to do */
+        } else {
+            b = bits;
+        }
+        while (b-- > 0u) {
             const bool out = ((word >> b) & 1u) != 0u;
             const uint32_t before = b == bits - 1u ? lead : h2;
             if (!cpha) {
@@ -110,6 +125,13 @@ static int bb_transfer(void *ctx, struct spi_dev *dev, const uint16_t *tx, uint1
     return INC_OK;
 }
 
+void spi_bitbang_set_fast(struct spi_bitbang *bb, const struct spi_bitbang_fast *fast)
+{
+    if (bb != NULL) {
+        bb->fast = fast;
+    }
+}
+
 static const struct spi_bus_ops bb_ops = {
     .transfer = bb_transfer,
     .attach = bb_attach,
@@ -130,6 +152,7 @@ int spi_bitbang_init(struct spi_bitbang *bb, const struct spi_bitbang_cfg *cfg)
         return INC_ERR_INVAL;
     }
     bb->cfg = *cfg;
+    bb->fast = NULL;
     bb->bus.ops = &bb_ops;
     bb->bus.ctx = bb;
     bb->sclk_level = false;

@@ -70,6 +70,7 @@ struct s32k_board {
     struct s32k_hal port;
     struct hal hal;
     struct spi_bitbang bb;
+    struct spi_bitbang_fast fast; /* the port's inlined bit loop for bb (s32k_board_bb_frame) */
     struct spi_lpspi lp;
     const struct spi_bus *spi; /* the engine chosen */
 };
@@ -83,6 +84,10 @@ struct s32k_board {
  */
 int s32k_board_init(struct s32k_board *b, const struct s32k_board_desc *desc,
                     enum s32k_board_spi spi, bool watchdog);
+
+/* The bit-banged engine's fast path on this board (struct spi_bitbang_fast; ctx = the board):
+ * PSOR/PCOR/PDIR and the port's inlined short delays, no call per bit. */
+uint16_t s32k_board_bb_frame(void *ctx, const struct spi_bitbang_frame *fr, bool *mosi_out);
 
 /* The board's vector entries call these (PORT pin interrupt, LPIT0). */
 void s32k_board_port_isr(struct s32k_board *b, uint32_t port);

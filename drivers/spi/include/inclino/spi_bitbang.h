@@ -42,8 +42,33 @@ struct spi_bitbang_cfg {
     hal_pin_t miso;
 };
 
+/*
+ * A port's fast path for the bits of one frame (optional, spi_bitbang_set_fast). The engine
+ * keeps everything around the bits (SCLK idle moves, CS, stall, set-up, hold, gaps); the port
+ * clocks the `bits` bits of `word`, MSB first, in exactly the engine's order with the port's
+ * pins and delays inlined - for CPHA = 0, per bit: MOSI if it changes, wait (lead_ns for the
+ * first bit, h2_ns after), read MISO, SCLK to !idle, wait h1_ns, SCLK to idle; for CPHA = 1:
+ * wait (lead/h2), SCLK to !idle, MOSI if it changes, wait h1_ns, read MISO, SCLK to idle - and
+ * returns the bits read (MSB first). A wait of 0 ns is skipped, a non-zero one is at least that
+ * long. One indirect call per frame instead of five per bit (docs/benchmarks.md).
+ */
+struct spi_bitbang_frame {
+    uint16_t word;
+    uint8_t bits;
+    bool cpha;
+    bool idle;       /* SCLK idle level (CPOL) */
+    bool mosi_level; /* MOSI now; the port returns the level it leaves in mosi_out */
+    uint32_t lead_ns, h1_ns, h2_ns;
+};
+
+struct spi_bitbang_fast {
+    uint16_t (*frame)(void *ctx, const struct spi_bitbang_frame *fr, bool *mosi_out);
+    void *ctx;
+};
+
 struct spi_bitbang {
     struct spi_bitbang_cfg cfg;
+    const struct spi_bitbang_fast *fast; /* NULL: every bit through the HAL's pin operations */
     struct spi_bus bus; /* the interface this engine serves; pass &bb.bus to spi_dev_init */
     bool sclk_level;
     bool mosi_level;
@@ -58,6 +83,10 @@ struct spi_bitbang {
  * INC_ERR_NULL (cfg, hal or a HAL operation missing) or INC_ERR_INVAL (pins).
  */
 int spi_bitbang_init(struct spi_bitbang *bb, const struct spi_bitbang_cfg *cfg);
+
+/* Use a port's fast path for the frames' bits (NULL: back to the HAL pin operations). It must
+ * drive the same pins as cfg names. */
+void spi_bitbang_set_fast(struct spi_bitbang *bb, const struct spi_bitbang_fast *fast);
 
 #ifdef __cplusplus
 }

@@ -31,30 +31,13 @@ static void poll_until(struct s32k_hal *p, uint64_t end_ticks)
     }
 }
 
-#if !defined(INCLINO_S32K_MMIO_SIM)
-/* A counted loop: n turns of subs + bne, at least S32K_HAL_LOOP_CYCLES core cycles each. */
-static void spin_turns(uint32_t n)
+void s32k_hal_delay_ns(struct s32k_hal *p, uint32_t ns)
 {
-    if (n != 0u) {
-#if defined(__ARM_ARCH_6M__)
-        /* gcc passes Thumb-1 inline assembly in divided syntax: there `sub` sets the flags */
-        __asm volatile("1: sub %0, #1\n\tbne 1b" : "+l"(n) : : "cc");
-#else
-        __asm volatile("1: subs %0, %0, #1\n\tbne 1b" : "+l"(n) : : "cc");
-#endif
-    }
-}
-#endif
-
-static void p_delay_ns(void *ctx, uint32_t ns)
-{
-    struct s32k_hal *p = ctx;
     uint64_t end;
     uint32_t key;
 #if !defined(INCLINO_S32K_MMIO_SIM)
     if (ns <= S32K_HAL_SPIN_MAX_NS) {
-        /* turns = ceil(ns * cycles/ns / LOOP_CYCLES), +1 for the call itself rounding down. */
-        spin_turns((uint32_t)(((uint64_t)ns * p->loop_q16 + 0xFFFFu) >> 16) + 1u);
+        s32k_hal_short_run(p, s32k_hal_short_prep(p, ns));
         return;
     }
 #endif
@@ -78,6 +61,11 @@ static void p_delay_ns(void *ctx, uint32_t ns)
     }
     s32k_cpu_irq_restore(key);
     poll_until(p, end);
+}
+
+static void p_delay_ns(void *ctx, uint32_t ns)
+{
+    s32k_hal_delay_ns(ctx, ns);
 }
 
 static uint32_t p_crit_enter(void *ctx)
@@ -207,6 +195,11 @@ static const struct hal_ops s32k_hal_ops = {
     p_irq_attach, p_irq_wait, p_crit_enter, p_crit_exit,
 };
 
+uint32_t s32k_hal_loop_q16(uint32_t core_hz)
+{
+    return (uint32_t)((((uint64_t)core_hz << 16) / 1000000000u + 1u) / S32K_HAL_LOOP_CYCLES) + 1u;
+}
+
 int s32k_hal_init(struct s32k_hal *p, const struct s32k_hal_config *cfg, struct hal *hal)
 {
     size_t i;
@@ -220,9 +213,7 @@ int s32k_hal_init(struct s32k_hal *p, const struct s32k_hal_config *cfg, struct 
     }
     p->cfg = *cfg;
     /* core cycles per ns in Q16.16, divided by the cycles of one loop turn */
-    p->loop_q16 = (uint32_t)((((uint64_t)cfg->core_hz << 16) / 1000000000u + 1u) /
-                             S32K_HAL_LOOP_CYCLES) +
-                  1u;
+    p->loop_q16 = s32k_hal_loop_q16(cfg->core_hz);
     for (i = 0; i < S32K_HAL_IRQ_SLOTS; i++) {
         p->irq[i].pin = HAL_PIN_NONE;
         p->irq[i].cb = NULL;

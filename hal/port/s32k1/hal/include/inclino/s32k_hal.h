@@ -68,6 +68,55 @@ struct s32k_hal {
  */
 int s32k_hal_init(struct s32k_hal *p, const struct s32k_hal_config *cfg, struct hal *hal);
 
+/* Core cycles per ns in Q16.16 over S32K_HAL_LOOP_CYCLES, rounded up (s32k_hal.loop_q16). */
+uint32_t s32k_hal_loop_q16(uint32_t core_hz);
+
+/* The port's delay_ns (also for callers that hold the struct, not the HAL). */
+void s32k_hal_delay_ns(struct s32k_hal *p, uint32_t ns);
+
+/*
+ * Short delays for inner loops (the bit-banged SPI's half periods): prepared once per frame,
+ * run per bit without a call or a multiply. On the part a prepared delay up to
+ * S32K_HAL_SPIN_MAX_NS is the counted loop inlined at the caller; anything longer, and every
+ * delay in the _sim build, goes to s32k_hal_delay_ns. A prepared 0 runs no delay.
+ */
+#define S32K_HAL_SHORT_CALL 0x80000000u
+static inline uint32_t s32k_hal_short_prep(const struct s32k_hal *p, uint32_t ns)
+{
+#if defined(INCLINO_S32K_MMIO_SIM)
+    (void)p;
+    return ns == 0u ? 0u : (S32K_HAL_SHORT_CALL | (ns & ~S32K_HAL_SHORT_CALL));
+#else
+    if (ns == 0u) {
+        return 0u;
+    }
+    if (ns > S32K_HAL_SPIN_MAX_NS) {
+        return S32K_HAL_SHORT_CALL | ns;
+    }
+    /* turns = ceil(ns * cycles per ns / LOOP_CYCLES) + 1 (the +1: a call may start mid-cycle) */
+    return (uint32_t)(((uint64_t)ns * p->loop_q16 + 0xFFFFu) >> 16) + 1u;
+#endif
+}
+
+static inline __attribute__((always_inline)) void s32k_hal_short_run(struct s32k_hal *p, uint32_t v)
+{
+    if (v == 0u) {
+        return;
+    }
+    if ((v & S32K_HAL_SHORT_CALL) != 0u) {
+        s32k_hal_delay_ns(p, v & ~S32K_HAL_SHORT_CALL);
+        return;
+    }
+#if !defined(INCLINO_S32K_MMIO_SIM)
+#if defined(__ARM_ARCH_6M__)
+    /* gcc passes Thumb-1 inline assembly in divided syntax: there `sub` sets the flags */
+    __asm volatile("1: sub %0, #1\n\tbne 1b" : "+l"(v) : : "cc");
+#else
+    __asm volatile("1: subs %0, %0, #1\n\tbne 1b" : "+l"(v) : : "cc");
+#endif
+#endif
+}
+
 /* Body of a PORT interrupt vector: port 0..4 (S32K116: call it for every port, 0..4). */
 void s32k_hal_port_isr(struct s32k_hal *p, uint32_t port);
 
