@@ -32,6 +32,7 @@ class Sim
         }
         sim_calpart_init(&part_, &prm, cfg.noise_seed);
         sim_rng_seed(&trng_, cfg.noise_seed ^ 0x54454D50ull); // "TEMP"
+        sim_rng_seed(&prng_, cfg.placement_seed ^ 0x504C4143ull); // "PLAC"
         st_.acc_lsb_g = kSimAccLsbG;
         st_.gyro_lsb_dps = kSimGyroLsbDps;
         st_.t_ref_c = 25.0;
@@ -56,6 +57,7 @@ class Sim
             chamber(-20.0, 60.0);
             break;
         case Schedule::Validation: chamber(-15.0, 55.0); break;
+        case Schedule::Hand: six_faces(next_block_++); break;
         }
         return st_;
     }
@@ -101,9 +103,44 @@ class Sim
         }
     }
 
+    // The direction the part really feels for nominal direction n (see SimConfig).
+    void placed(const double n[3], double u[3])
+    {
+        for (int i = 0; i < 3; i++)
+            u[i] = n[i];
+        if (cfg_.nonortho_deg != 0.0) {
+            const double d = cfg_.nonortho_deg * kPi / 180.0;
+            // The cube's face normals in the sensor frame: x exact, y leans toward x, z toward x
+            // and away from y; u = the normal of the face pointing up, by its components.
+            const double ex[3] = {1.0, 0.0, 0.0};
+            const double ey[3] = {std::sin(d), std::cos(d), 0.0};
+            const double ez[3] = {std::sin(d), -std::sin(d / 2.0),
+                                  std::sqrt(1.0 - std::sin(d) * std::sin(d) -
+                                            std::sin(d / 2.0) * std::sin(d / 2.0))};
+            for (int i = 0; i < 3; i++)
+                u[i] = n[0] * ex[i] + n[1] * ey[i] + n[2] * ez[i];
+            const double m = std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+            for (int i = 0; i < 3; i++)
+                u[i] /= m;
+        }
+        if (cfg_.placement_deg > 0.0) {
+            // A random unit vector p perpendicular to u; tilt u toward p by theta.
+            double p[3], r[3] = {sim_rng_gauss(&prng_), sim_rng_gauss(&prng_), sim_rng_gauss(&prng_)};
+            const double th = cfg_.placement_deg * (0.5 + 0.5 * sim_rng_uniform(&prng_)) * kPi / 180.0;
+            const double d = r[0] * u[0] + r[1] * u[1] + r[2] * u[2];
+            for (int i = 0; i < 3; i++)
+                p[i] = r[i] - d * u[i];
+            const double m = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+            for (int i = 0; i < 3; i++)
+                u[i] = std::cos(th) * u[i] + std::sin(th) * p[i] / m;
+        }
+    }
+
     void acc_row(long block, double ux, double uy, double uz)
     {
-        const double u[3] = {ux, uy, uz}, still[3] = {0.0, 0.0, 0.0};
+        const double nom[3] = {ux, uy, uz}, still[3] = {0.0, 0.0, 0.0};
+        double u[3];
+        placed(nom, u);
         double sum[3] = {0.0, 0.0, 0.0}, tsum = 0.0;
         sim_inertial_input out;
         for (int k = 0; k < cfg_.samples; k++) {
@@ -225,6 +262,7 @@ class Sim
     SimConfig cfg_;
     sim_calpart part_{};
     sim_rng trng_{};
+    sim_rng prng_{};
     Station st_;
     double air_ = 25.0, die_ = 25.0;
     long next_block_ = 0;

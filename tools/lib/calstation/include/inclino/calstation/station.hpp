@@ -75,6 +75,7 @@ enum class Schedule {
     Calibration, // ambient block (six faces, tilt sweeps, gyro), then -20..60 degC every 10 degC
     Validation,  // six faces at -15..55 degC every 10 degC, for held-out checks
     Ambient,     // the ambient block only (no chamber)
+    Hand,        // six faces of a hand-placed cube at ambient (no tilts, no gyro, no chamber)
 };
 
 struct SimConfig {
@@ -88,6 +89,15 @@ struct SimConfig {
     double die_tau_s = 600.0;   // die temperature lag behind the chamber air
     double temp_noise_c = 0.05; // on-board temperature sensor noise, rms
     uint64_t noise_seed = 1;
+    // Placement of the acc positions. The station file always records the nominal direction u;
+    // the part feels u turned by up to placement_deg (each position its own random tilt of
+    // 0.5..1 x placement_deg in a random direction, from placement_seed) and, on a cube whose
+    // faces are not orthogonal, the fixed face-normal errors of nonortho_deg (the +y face
+    // leans nonortho_deg toward +x, the +z face nonortho_deg toward +x and -nonortho_deg/2
+    // toward +y; opposite faces parallel). 0, 0: a precise positioner.
+    double placement_deg = 0.0;
+    uint64_t placement_seed = 1;
+    double nonortho_deg = 0.0;
     bool have_binding = false; // override the simulated part's identity (default: an ADIS16364)
     std::array<uint32_t, 6> binding{};
 };
