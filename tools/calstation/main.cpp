@@ -60,6 +60,11 @@ struct Problem {
 };
 const Problem kProblems[] = {
     {"empty station file", "ERR_FORMAT", "empty-file"},
+    {"empty sample file", "ERR_FORMAT", "empty-file"},
+    {"placeholder temperature", "ERR_INVAL", "placeholder-temperature"},
+    {"no acceleration column", "ERR_FORMAT", "no-acc-column"},
+    {"no still face", "ERR_DEGENERATE", "no-faces"},
+    {"a directory", "ERR_IO", "cannot-open"},
     {"no column header", "ERR_FORMAT", "no-header"},
     {"no measurement rows", "ERR_FORMAT", "no-rows"},
     {"missing setting", "ERR_FORMAT", "missing-setting"},
@@ -240,9 +245,15 @@ int cmd_simulate(int argc, char **argv)
 {
     SimConfig cfg;
     std::string out;
+    Units units;
+    bool samples = false, with_temp = true;
     for (int i = 0; i < argc; i++) {
         const std::string a = argv[i];
         uint64_t v = 0;
+        int ust = 0;
+        const int uo = units_option(argc, argv, i, units, ust);
+        if (uo < 0) return ust;
+        if (uo > 0) continue;
         if (i + 1 >= argc) return bad_arg(argv[i], "", "a value");
         const char *val = argv[++i];
         if (a == "--part") {
@@ -288,6 +299,19 @@ int cmd_simulate(int argc, char **argv)
                 return bad_arg("--nonortho-deg", val, "-5..5 degrees");
         } else if (a == "--out") {
             out = val;
+        } else if (a == "--format") {
+            const std::string f = val;
+            if (f == "station")
+                samples = false;
+            else if (f == "samples")
+                samples = true;
+            else if (f == "samples-notemp")
+                samples = true, with_temp = false;
+            else
+                return bad_arg("--format", val, "station, samples or samples-notemp");
+        } else if (a == "--rate") {
+            if (!parse_real(val, 1.0, 100000.0, cfg.rate_sps))
+                return bad_arg("--rate", val, "1..100000 samples/s");
         } else if (a == "--binding") {
             if (!parse_binding(val, cfg.binding))
                 return bad_arg("--binding", val, "generic or six integers F,P,R,S,L1,L2");
@@ -297,11 +321,19 @@ int cmd_simulate(int argc, char **argv)
         }
     }
     if (out.empty()) return usage();
+    cfg.keep_samples = samples;
+    if (samples && cfg.schedule != Schedule::Hand && cfg.schedule != Schedule::Ambient)
+        return bad_arg("--format", "samples", "--schedule hand or ambient with samples");
     const Station st = simulate_station(cfg);
-    const std::string e = write_output(out, format_station(st), {});
+    const std::string e =
+        write_output(out, samples ? format_samples(st, units.per_g(), with_temp) : format_station(st), {});
     if (!e.empty()) return write_refused(e);
-    std::printf("wrote %s: %zu rows\n", out.c_str(), st.rows.size());
+    if (samples)
+        std::printf("wrote %s: %zu samples (%s)\n", out.c_str(), st.samples.size(), units.name());
+    else
+        std::printf("wrote %s: %zu rows\n", out.c_str(), st.rows.size());
     tool_summary_add("rows", "%zu", st.rows.size());
+    if (samples) tool_summary_add("samples", "%zu", st.samples.size());
     return 0;
 }
 

@@ -66,7 +66,7 @@ std::string to_calrec(const CalResult &c, const Station &st, struct calrec &r)
     r.binding.lot_id1 = st.binding[4];
     r.binding.lot_id2 = st.binding[5];
     if (calrec_check_binding(&r.binding) != INC_OK) {
-        return "binding out of range (calrec_check_binding): family 1..3, product 1..0xFFFF, ...";
+        return "binding out of range (calrec_check_binding): family 1..4 (4 generic), product 1..0xFFFF, ...";
     }
     for (int a = 0; a < 3; a++) {
         r.acc_offset[a] = q(c.acc_offset[a], kQ16);

@@ -52,6 +52,14 @@ std::string key_of(const std::string &name)
         if (c == ' ' || c == '\t' || c == '"') continue;
         k += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     }
+    // A unit written into the name: acc_x_mps2, ax_g, accel_x_ms2.
+    for (const char *suf : {"_mps2", "_ms2", "_m/s^2", "_m/s2", "_ms^2", "_g"}) {
+        const size_t n = std::strlen(suf);
+        if (k.size() > n + 1 && k.compare(k.size() - n, n, suf) == 0) {
+            k.erase(k.size() - n);
+            break;
+        }
+    }
     return k;
 }
 

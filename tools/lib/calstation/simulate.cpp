@@ -9,6 +9,7 @@
 #include "inclino/sim/inertial.h"
 
 #include <cmath>
+#include <cstdio>
 
 namespace calstation
 {
@@ -136,6 +137,32 @@ class Sim
         }
     }
 
+    // The part carried by hand from direction a to b: 2 s along the normalised straight path
+    // with 0.2 g of shaking (not still, so a sample CSV has clear moves between faces).
+    void carry(const double a[3], const double b[3])
+    {
+        const int n = static_cast<int>(2.0 * cfg_.rate_sps);
+        const double still[3] = {0.0, 0.0, 0.0};
+        sim_inertial_input out;
+        for (int k = 0; k < n; k++) {
+            const double f = (k + 1.0) / (n + 1.0);
+            double u[3], m = 0.0;
+            for (int i = 0; i < 3; i++) {
+                u[i] = (1.0 - f) * a[i] + f * b[i] + 0.2 * sim_rng_gauss(&prng_);
+                m += u[i] * u[i];
+            }
+            m = std::sqrt(m);
+            for (int i = 0; i < 3; i++)
+                u[i] = m > 1e-6 ? u[i] / m : 0.0;
+            sample(u, still, out);
+            std::array<double, 3> g{};
+            for (int i = 0; i < 3; i++)
+                g[i] = sim_quantise(out.accel_g[i], kSimAccLsbG, 14, nullptr) * kSimAccLsbG;
+            st_.samples.push_back(g);
+            st_.sample_temp_c.push_back(temp_reading());
+        }
+    }
+
     void acc_row(long block, double ux, double uy, double uz)
     {
         const double nom[3] = {ux, uy, uz}, still[3] = {0.0, 0.0, 0.0};
@@ -143,13 +170,25 @@ class Sim
         placed(nom, u);
         double sum[3] = {0.0, 0.0, 0.0}, tsum = 0.0;
         sim_inertial_input out;
+        if (cfg_.keep_samples && have_last_) carry(last_, u);
         for (int k = 0; k < cfg_.samples; k++) {
             sample(u, still, out);
+            std::array<double, 3> g{};
             for (int i = 0; i < 3; i++) {
-                sum[i] += sim_quantise(out.accel_g[i], kSimAccLsbG, 14, nullptr);
+                const int32_t c = sim_quantise(out.accel_g[i], kSimAccLsbG, 14, nullptr);
+                sum[i] += c;
+                g[i] = c * kSimAccLsbG;
             }
-            tsum += temp_reading();
+            const double tr = temp_reading();
+            tsum += tr;
+            if (cfg_.keep_samples) {
+                st_.samples.push_back(g);
+                st_.sample_temp_c.push_back(tr);
+            }
         }
+        for (int i = 0; i < 3; i++)
+            last_[i] = u[i];
+        have_last_ = true;
         Row r;
         r.block = block;
         r.kind = RowKind::Acc;
@@ -263,6 +302,8 @@ class Sim
     sim_calpart part_{};
     sim_rng trng_{};
     sim_rng prng_{};
+    double last_[3] = {0.0, 0.0, 0.0};
+    bool have_last_ = false;
     Station st_;
     double air_ = 25.0, die_ = 25.0;
     long next_block_ = 0;
@@ -273,7 +314,29 @@ class Sim
 Station simulate_station(const SimConfig &cfg)
 {
     Sim s(cfg);
-    return s.run();
+    Station st = s.run();
+    if (cfg.keep_samples) st.sample_rate_sps = cfg.rate_sps;
+    return st;
+}
+
+std::string format_samples(const Station &st, double unit_per_g, bool with_temp)
+{
+    std::string o = "# Inclino simulated IMU samples (calstation simulate --format samples)\n";
+    o += with_temp ? "t,ax,ay,az,temp_c\n" : "t,ax,ay,az\n";
+    char b[160];
+    const double dt = st.sample_rate_sps > 0.0 ? 1.0 / st.sample_rate_sps : 0.0;
+    for (size_t k = 0; k < st.samples.size(); k++) {
+        const auto &g = st.samples[k];
+        const int n = std::snprintf(b, sizeof b, "%.6f,%.7g,%.7g,%.7g", k * dt, g[0] * unit_per_g,
+                                    g[1] * unit_per_g, g[2] * unit_per_g);
+        o.append(b, static_cast<size_t>(n));
+        if (with_temp) {
+            std::snprintf(b, sizeof b, ",%.3f", st.sample_temp_c[k]);
+            o += b;
+        }
+        o += "\n";
+    }
+    return o;
 }
 
 } // namespace calstation

@@ -47,9 +47,13 @@ const char *tchoice_name(TChoice c);
 //              matrix and the nonlinearity), which assumes nothing about where the rows were
 //              placed; then the rotation R (M = R S) from the nominal directions (orthogonal
 //              Procrustes), the only part of M the magnitudes cannot see;
-//   Auto       Magnitude when the nominal fit misses 1 g by more than the magnitude fit (the
-//              placement check: rms over the rows of ||a| - 1 g| above 1.25 x + 0.005 mg of the
-//              magnitude fit's), else Nominal (the positioner's result is kept).
+//   Auto       the placement check: Magnitude when the nominal fit's residual against the
+//              nominal directions is more than 2 x its residual against 1 g + 0.05 mg, or its
+//              residual against 1 g more than 2 x the pair method's + 0.05 mg (rms over the
+//              rows); else Nominal (a precise positioner: its result is kept).
+//   The magnitude fit adjusts the offsets and the diagonal of S only: the off-diagonal terms
+//   enter |S n| through n_i n_j, which vanishes to first order on faces and single-axis tilt
+//   sweeps, so they stay the nominal fit's, as does the nonlinearity.
 enum class FitMethod { Auto, Nominal, Pair, Magnitude };
 bool parse_fit_method(const std::string &s, FitMethod &m);
 const char *fit_method_name(FitMethod m);

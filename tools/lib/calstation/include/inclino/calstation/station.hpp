@@ -45,6 +45,10 @@ struct Row {
 };
 
 struct Station {
+    // Simulated samples (SimConfig::keep_samples): acceleration g and temperature reading degC.
+    std::vector<std::array<double, 3>> samples;
+    std::vector<double> sample_temp_c;
+    double sample_rate_sps = 0.0;
     double acc_lsb_g = 0.0;
     double gyro_lsb_dps = 0.0;
     double t_ref_c = 25.0;
@@ -98,6 +102,10 @@ struct SimConfig {
     double placement_deg = 0.0;
     uint64_t placement_seed = 1;
     double nonortho_deg = 0.0;
+    // Keep every accelerometer sample (g, as quantised) of the acc rows, with the moves between
+    // positions (2 s each, the part carried by hand: a path between the two directions plus
+    // 0.2 g of shaking), for a sample CSV (format_samples).
+    bool keep_samples = false;
     bool have_binding = false; // override the simulated part's identity (default: an ADIS16364)
     std::array<uint32_t, 6> binding{};
 };
@@ -108,6 +116,10 @@ constexpr double kSimGyroLsbDps = 0.05; // 0.05 deg/s/LSB, 14-bit
 constexpr double kSimTempLsbC = 0.136;  // 0.136 degC/LSB, 0 LSB = 25 degC
 
 Station simulate_station(const SimConfig &cfg);
+
+// The kept samples as a sample CSV (samples.hpp): t,ax,ay,az[,temp_c], acceleration in units of
+// unit_per_g per g (1: g; 9.80665: m/s^2).
+std::string format_samples(const Station &st, double unit_per_g, bool with_temp);
 
 } // namespace calstation
 
