@@ -399,17 +399,18 @@ std::string load_input(const std::string &path, const Units &u, double t_ref, bo
     return e.empty() ? e : path + ": " + e;
 }
 
-std::string faces_csv(const CalResult &c)
+std::string faces_csv(const CalResult &c, const FwCheck &fw)
 {
     std::string o = "# calstation fit --faces-csv: | |a| - 1 g | per static row (position mean), mg\n"
                     "row,line,block,temp_c,ux,uy,uz,raw_mg,pair_mg,nominal_mg,magnitude_mg,"
-                    "chosen_mg,angle_deg\n";
+                    "chosen_mg,angle_deg,firmware_mg\n";
     char b[400];
     for (size_t k = 0; k < c.rows.size(); k++) {
         const RowResidual &r = c.rows[k];
-        std::snprintf(b, sizeof b, "%zu,%d,%ld,%.4f,%.6f,%.6f,%.6f,%.5f,%.5f,%.5f,%.5f,%.5f,%.4f\n",
+        std::snprintf(b, sizeof b, "%zu,%d,%ld,%.4f,%.6f,%.6f,%.6f,%.5f,%.5f,%.5f,%.5f,%.5f,%.4f,%.5f\n",
                       k + 1, r.line, r.block, r.temp_c, r.u[0], r.u[1], r.u[2], r.raw_mg,
-                      r.pair_mg, r.nominal_mg, r.magnitude_mg, r.chosen_mg, r.angle_deg);
+                      r.pair_mg, r.nominal_mg, r.magnitude_mg, r.chosen_mg, r.angle_deg,
+                      k < fw.row_mag_mg.size() ? fw.row_mag_mg[k] : 0.0);
         o += b;
     }
     return o;
@@ -581,7 +582,7 @@ int cmd_fit(int argc, char **argv)
     }
     const std::vector<std::string> inputs = {in};
     if (!faces_out.empty()) {
-        e = write_output(faces_out, faces_csv(res), inputs);
+        e = write_output(faces_out, faces_csv(res, fw), inputs);
         if (!e.empty()) return write_refused(e);
     }
     if (!t_out.empty()) {

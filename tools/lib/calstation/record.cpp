@@ -150,6 +150,7 @@ std::string firmware_check(const Station &st, const struct calrec &rec, FwCheck 
         const double mag = std::sqrt(static_cast<double>(o[0]) * o[0] + static_cast<double>(o[1]) * o[1] +
                                      static_cast<double>(o[2]) * o[2]) / kQ16;
         const double em = std::fabs(mag - 1.0) * 1e3;
+        out.row_mag_mg.push_back((mag - 1.0) * 1e3);
         out.mag_max_mg = std::fmax(out.mag_max_mg, em);
         out.mag_rms_mg += em * em;
         for (int i = 0; i < 3; i++) {

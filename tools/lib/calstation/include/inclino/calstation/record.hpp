@@ -35,6 +35,7 @@ struct FwCheck {
     double max_tilt_err_mg = 0.0; // the same over the rows within +-30 deg (|u| <= 0.5 g on x, y)
     double mag_rms_mg = 0.0;      // rms over the rows of ||firmware output| - 1 g|
     double mag_max_mg = 0.0;
+    std::vector<double> row_mag_mg; // |firmware output| - 1 g per acc row, in file order
 };
 
 // The firmware's fixed-point correction (cal_acc_init / cal_acc_set_temp / cal_acc_apply) on
