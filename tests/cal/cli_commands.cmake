@@ -101,7 +101,13 @@ run(show_csv 1 "status=error;error=ERR_[A-Z]+;problem=record-refused" show ${W}/
 file(WRITE ${W}/short.bin "ICAL")
 run(show_short 1 "status=error;error=ERR_FORMAT;problem=not-a-record" show ${W}/short.bin)
 run(apply_dir 1 "status=error;error=ERR_IO;problem=cannot-open" apply ${W}/hand.bin ${W} -o ${W}/o.csv)
-run(fit_wrong_units 1 "status=error" fit ${W}/hand.csv)
+# Without --units, samples that read 9.8 at rest are taken as m/s^2 (said); --units g refuses.
+run(fit_detect_units 0 "status=ok;units=m/s2;units_detected=1;fit=magnitude" fit ${W}/hand.csv)
+key_of("${out}" face_max_mg det_max)
+if(NOT det_max LESS_EQUAL 0.05)
+  message(SEND_ERROR "units detected: face-mean max ${det_max} mg")
+endif()
+run(fit_wrong_units 1 "status=error" fit ${W}/hand.csv --units g)
 file(WRITE ${W}/noacc.csv "t,foo,bar\n0,1,2\n")
 run(no_acc 1 "status=error;error=ERR_FORMAT;problem=no-acc-column" fit ${W}/noacc.csv)
 

@@ -13,6 +13,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <numeric>
 
 using namespace calstation;
 
@@ -37,7 +38,8 @@ void pair_method(const Station &st, double &rms, double &max)
     for (const auto &r : st.rows) {
         double m2 = 0.0;
         for (int i = 0; i < 3; i++) {
-            const double a = (r.v[i] * st.acc_lsb_g - 0.5 * (pos[i] + neg[i])) / (0.5 * (pos[i] - neg[i]));
+            const double a = (r.v[i] * st.acc_lsb_g - 0.5 * (pos[i] + neg[i])) /
+                             (0.5 * (pos[i] - neg[i]));
             m2 += a * a;
         }
         const double e = (std::sqrt(m2) - 1.0) * 1e3;
@@ -54,10 +56,10 @@ struct Bench {
 };
 
 // REQUIRE for a function that returns a value: the check counts, the bench stops.
-#define NEED(cond)                                                                                 \
-    do {                                                                                           \
-        CHECK(cond);                                                                               \
-        if (!(cond)) return b;                                                                     \
+#define NEED(cond)             \
+    do {                       \
+        CHECK(cond);           \
+        if (!(cond)) return b; \
     } while (0)
 
 Bench run_bench(const SimConfig &sc, FitOptions opt = FitOptions{})
@@ -115,8 +117,8 @@ static void test_hand_placed()
         worst = std::fmax(worst, b.fw_max_mg);
         worst_pair = std::fmin(worst_pair, b.pair_rms_mg);
     }
-    std::printf("hand-placed, 8 cubes: worst face-mean %.4f mg; best pair-method rms %.4f mg\n", worst,
-                worst_pair);
+    std::printf("hand-placed, 8 cubes: worst face-mean %.4f mg; best pair-method rms %.4f mg\n",
+                worst, worst_pair);
 }
 
 static void test_non_orthogonal_cube()
@@ -151,10 +153,11 @@ static void test_positioner()
     REQUIRE(to_calrec(c, st, rec).empty());
     FwCheck fw;
     REQUIRE(firmware_check(st, rec, fw).empty());
-    std::printf("positioner: tilt rows %.3f mg; | |a|-1g | rms %.4f mg (tool's pair method %.4f mg); "
-                "nominal fit against the directions %.4f mg, magnitude fit %.4f mg\n",
-                fw.max_tilt_err_mg, fw.mag_rms_mg, c.res_pair.mag_rms_mg, c.res_nominal.dir_rms_mg,
-                c.res_magnitude.mag_rms_mg);
+    std::printf(
+        "positioner: tilt rows %.3f mg; | |a|-1g | rms %.4f mg (tool's pair method %.4f mg); "
+        "nominal fit against the directions %.4f mg, magnitude fit %.4f mg\n",
+        fw.max_tilt_err_mg, fw.mag_rms_mg, c.res_pair.mag_rms_mg, c.res_nominal.dir_rms_mg,
+        c.res_magnitude.mag_rms_mg);
     CHECK(fw.max_tilt_err_mg <= 0.51);
     CHECK(c.res_nominal.dir_rms_mg < 2.0 * c.res_nominal.mag_rms_mg + 0.05);
     CHECK(c.res_nominal.mag_rms_mg <= c.res_pair.mag_rms_mg);
@@ -178,9 +181,9 @@ static void test_samples_path()
     size_t skipped = 9;
     REQUIRE(station_from_segments(sf, seg, 25.0, st, skipped).empty());
     CHECK_EQ_INT(skipped, 0);
-    int seen = 0;
-    for (const auto &g : seg)
-        seen |= 1 << (2 * g.axis + (g.sign < 0));
+    const int seen = std::accumulate(seg.begin(), seg.end(), 0, [](int acc, const Segment &g) {
+        return acc | 1 << (2 * g.axis + (g.sign < 0));
+    });
     CHECK_EQ_INT(seen, 63);
     st.have_binding = true;
     st.binding = {CALREC_FAMILY_GENERIC, 1, 0, 0, 0, 0};
@@ -195,18 +198,21 @@ static void test_samples_path()
     REQUIRE(apply_firmware(rec, sf.acc_g, {}, 25.0, out, range).empty());
     CHECK_EQ_INT(range, 0);
     const FaceResidual before = face_residual(sf.acc_g, seg), after = face_residual(out, seg);
-    std::printf("samples: %zu, faces %zu, face-mean before rms %.3f mg, after rms %.4f max %.4f mg\n",
-                sf.acc_g.size(), after.faces, before.rms_mg, after.rms_mg, after.max_mg);
+    std::printf(
+        "samples: %zu, faces %zu, face-mean before rms %.3f mg, after rms %.4f max %.4f mg\n",
+        sf.acc_g.size(), after.faces, before.rms_mg, after.rms_mg, after.max_mg);
     CHECK(before.rms_mg > 10.0);
     CHECK(after.max_mg <= 0.05);
     // Bad sample files.
     SampleFile bad;
     CHECK(parse_samples("", 1.0, bad).find("empty") != std::string::npos);
-    CHECK(parse_samples("t,foo\n0,1\n", 1.0, bad).find("no acceleration column") != std::string::npos);
+    CHECK(parse_samples("t,foo\n0,1\n", 1.0, bad).find("no acceleration column") !=
+          std::string::npos);
     CHECK(parse_samples("ax,ay,az\n1,2\n", 1.0, bad).find("fields") != std::string::npos);
     CHECK(parse_samples("ax,ay,az\n1,nan,0\n", 1.0, bad).find("not a finite") != std::string::npos);
     CHECK(parse_samples("ax,ay,az\n100,0,0\n", 1.0, bad).find("64 g") != std::string::npos);
-    CHECK(parse_samples("ax [m/s^2],AY,acc_z_mps2,temp_c\n9.8,0,0,25\n", kStandardGravity, bad).empty());
+    CHECK(parse_samples("ax [m/s^2],AY,acc_z_mps2,temp_c\n9.8,0,0,25\n", kStandardGravity, bad)
+              .empty());
     CHECK_EQ_INT(bad.col_temp, 3);
 }
 

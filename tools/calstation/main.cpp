@@ -209,9 +209,16 @@ int write_refused(const std::string &e)
 // Units of the acceleration: g, or m/s^2 with the value of 1 g.
 struct Units {
     bool ms2 = false;
+    bool given = false; // --units on the command line (else a sample CSV's unit is detected)
     double g = calstation::kStandardGravity;
-    double per_g() const { return ms2 ? g : 1.0; }
-    const char *name() const { return ms2 ? "m/s2" : "g"; }
+    double per_g() const
+    {
+        return ms2 ? g : 1.0;
+    }
+    const char *name() const
+    {
+        return ms2 ? "m/s2" : "g";
+    }
 };
 
 // --units / --g; returns 0 when not one of them, 1 when taken (i advanced), or a usage status.
@@ -226,6 +233,7 @@ int units_option(int argc, char **argv, int &i, Units &u, int &status)
     const char *val = argv[++i];
     if (a == "--units") {
         const std::string v = val;
+        u.given = true;
         if (v == "g")
             u.ms2 = false;
         else if (v == "m/s2" || v == "m/s^2" || v == "ms2" || v == "mps2")
@@ -325,8 +333,8 @@ int cmd_simulate(int argc, char **argv)
     if (samples && cfg.schedule != Schedule::Hand && cfg.schedule != Schedule::Ambient)
         return bad_arg("--format", "samples", "--schedule hand or ambient with samples");
     const Station st = simulate_station(cfg);
-    const std::string e =
-        write_output(out, samples ? format_samples(st, units.per_g(), with_temp) : format_station(st), {});
+    const std::string e = write_output(
+        out, samples ? format_samples(st, units.per_g(), with_temp) : format_station(st), {});
     if (!e.empty()) return write_refused(e);
     if (samples)
         std::printf("wrote %s: %zu samples (%s)\n", out.c_str(), st.samples.size(), units.name());
@@ -369,16 +377,35 @@ void print_coefficients(const CalResult &c, bool gyro_known, bool gyro_scale_kno
     }
 }
 
+// Without --units, a sample CSV whose median |a| is 8.5..11 (it reads about 9.8 at rest) is in
+// m/s^2: no accelerometer in g reads 9.8 g at rest. Re-parsed then, and said.
+std::string detect_units(const std::string &text, Units &u, SampleFile &sf, bool &detected)
+{
+    detected = false;
+    if (u.given || sf.acc_g.empty()) return "";
+    std::vector<double> m(sf.acc_g.size());
+    std::transform(sf.acc_g.begin(), sf.acc_g.end(), m.begin(), [](const std::array<double, 3> &a) {
+        return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+    });
+    std::nth_element(m.begin(), m.begin() + static_cast<long>(m.size() / 2), m.end());
+    const double med = m[m.size() / 2];
+    if (!(med >= 8.5 && med <= 11.0)) return "";
+    u.ms2 = true;
+    detected = true;
+    return parse_samples(text, u.per_g(), sf);
+}
+
 // The input of fit and apply: a station file or a sample CSV, in g or m/s^2.
 struct Input {
     bool samples = false;
+    bool units_detected = false;
     Station st;
     SampleFile sf;
     std::vector<Segment> seg;
     size_t skipped = 0;
 };
 
-std::string load_input(const std::string &path, const Units &u, double t_ref, bool t_ref_set,
+std::string load_input(const std::string &path, Units &u, double t_ref, bool t_ref_set,
                        size_t window, Input &in)
 {
     std::string text;
@@ -393,6 +420,7 @@ std::string load_input(const std::string &path, const Units &u, double t_ref, bo
     }
     in.samples = true;
     e = parse_samples(text, u.per_g(), in.sf);
+    if (e.empty()) e = detect_units(text, u, in.sf, in.units_detected);
     if (!e.empty()) return path + ": " + e;
     in.seg = find_segments(in.sf, window);
     e = station_from_segments(in.sf, in.seg, t_ref, in.st, in.skipped);
@@ -401,15 +429,17 @@ std::string load_input(const std::string &path, const Units &u, double t_ref, bo
 
 std::string faces_csv(const CalResult &c, const FwCheck &fw)
 {
-    std::string o = "# calstation fit --faces-csv: | |a| - 1 g | per static row (position mean), mg\n"
-                    "row,line,block,temp_c,ux,uy,uz,raw_mg,pair_mg,nominal_mg,magnitude_mg,"
-                    "chosen_mg,angle_deg,firmware_mg\n";
+    std::string o =
+        "# calstation fit --faces-csv: | |a| - 1 g | per static row (position mean), mg\n"
+        "row,line,block,temp_c,ux,uy,uz,raw_mg,pair_mg,nominal_mg,magnitude_mg,"
+        "chosen_mg,angle_deg,firmware_mg\n";
     char b[400];
     for (size_t k = 0; k < c.rows.size(); k++) {
         const RowResidual &r = c.rows[k];
-        std::snprintf(b, sizeof b, "%zu,%d,%ld,%.4f,%.6f,%.6f,%.6f,%.5f,%.5f,%.5f,%.5f,%.5f,%.4f,%.5f\n",
-                      k + 1, r.line, r.block, r.temp_c, r.u[0], r.u[1], r.u[2], r.raw_mg,
-                      r.pair_mg, r.nominal_mg, r.magnitude_mg, r.chosen_mg, r.angle_deg,
+        std::snprintf(b, sizeof b,
+                      "%zu,%d,%ld,%.4f,%.6f,%.6f,%.6f,%.5f,%.5f,%.5f,%.5f,%.5f,%.4f,%.5f\n", k + 1,
+                      r.line, r.block, r.temp_c, r.u[0], r.u[1], r.u[2], r.raw_mg, r.pair_mg,
+                      r.nominal_mg, r.magnitude_mg, r.chosen_mg, r.angle_deg,
                       k < fw.row_mag_mg.size() ? fw.row_mag_mg[k] : 0.0);
         o += b;
     }
@@ -443,8 +473,9 @@ std::string tfits_csv(const CalResult &c)
             if (!fb.ok || !fs.ok) continue;
             for (int i = 0; i <= 200; i++) {
                 const double t = lo + (hi - lo) * i / 200.0;
-                std::snprintf(b, sizeof b, "%s,%s,%.4f,%.5f,%.4f\n", TemperatureFits::name(k), ax[a],
-                              t, fb.model.eval(t) * 1e3, (fs.model.eval(t) / kref - 1.0) * 1e6);
+                std::snprintf(b, sizeof b, "%s,%s,%.4f,%.5f,%.4f\n", TemperatureFits::name(k),
+                              ax[a], t, fb.model.eval(t) * 1e3,
+                              (fs.model.eval(t) / kref - 1.0) * 1e6);
                 o += b;
             }
         }
@@ -471,7 +502,8 @@ int cmd_fit(int argc, char **argv)
         const bool has_val = i + 1 < argc;
         if (a == "--tmodel" && has_val) {
             if (!parse_tchoice(argv[++i], opt.tmodel))
-                return bad_arg("--tmodel", argv[i], "best, none, linear, parabola, lorentz, pwl or lorentz-cubic");
+                return bad_arg("--tmodel", argv[i],
+                               "best, none, linear, parabola, lorentz, pwl or lorentz-cubic");
             opt.tmodel_auto = false;
         } else if (a == "--fit" && has_val) {
             if (!parse_fit_method(argv[++i], opt.method))
@@ -511,7 +543,11 @@ int cmd_fit(int argc, char **argv)
         return refuse(e, "ERR_FORMAT", "input");
     }
     Station &st = inp.st;
-    std::printf("units: %s%s", units.name(), units.ms2 ? "" : "\n");
+    std::printf("units: %s%s%s", units.name(),
+                inp.units_detected ? " (detected: the samples read about 9.8 at rest; --units g "
+                                     "to read them as g)"
+                                   : "",
+                units.ms2 ? "" : "\n");
     if (units.ms2)
         std::printf(", 1 g = %.6g m/s^2 (%s; --g sets it)\n", units.g,
                     units.g == kStandardGravity ? "standard gravity" : "set with --g");
@@ -553,7 +589,8 @@ int cmd_fit(int argc, char **argv)
         "max |firmware - double model| = %.2f LSB Q16; ||a|-1g| rms %.4f mg max %.4f mg; max |a - u| "
         "= %.3f mg (tilt rows within +-30 deg: %s)\n",
         fw.rows, fw.max_lsb, fw.mag_rms_mg, fw.mag_max_mg, fw.max_err_mg,
-        fw.max_tilt_err_mg > 0.0 ? (std::to_string(fw.max_tilt_err_mg).substr(0, 5) + " mg").c_str() : "n/a");
+        fw.max_tilt_err_mg > 0.0 ? (std::to_string(fw.max_tilt_err_mg).substr(0, 5) + " mg").c_str()
+                                 : "n/a");
     // On samples: the firmware on every sample, face means as the session is scored.
     FaceResidual fr_before, fr_after, fr_pair;
     if (inp.samples) {
@@ -570,11 +607,12 @@ int cmd_fit(int argc, char **argv)
             if (fit_station(st, po, pr).empty() && to_calrec(pr, st, prec).empty() &&
                 apply_firmware(prec, inp.sf.acc_g, inp.sf.temp_c, st.t_ref_c, o, range).empty())
                 fr_pair = face_residual(o, inp.seg);
-            std::printf("samples through the firmware: face-mean ||a|-1g| over %zu faces: before rms "
-                        "%.4f mg max %.4f mg; after rms %.4f mg max %.4f mg (per-axis pair method: "
-                        "rms %.4f mg max %.4f mg)\n",
-                        fr_after.faces, fr_before.rms_mg, fr_before.max_mg, fr_after.rms_mg,
-                        fr_after.max_mg, fr_pair.rms_mg, fr_pair.max_mg);
+            std::printf(
+                "samples through the firmware: face-mean ||a|-1g| over %zu faces: before rms "
+                "%.4f mg max %.4f mg; after rms %.4f mg max %.4f mg (per-axis pair method: "
+                "rms %.4f mg max %.4f mg)\n",
+                fr_after.faces, fr_before.rms_mg, fr_before.max_mg, fr_after.rms_mg,
+                fr_after.max_mg, fr_pair.rms_mg, fr_pair.max_mg);
         } else {
             std::fprintf(stderr, "calstation: %s\n", e.c_str());
             return refuse(e, "ERR_RANGE", "firmware");
@@ -606,10 +644,13 @@ int cmd_fit(int argc, char **argv)
     }
     tool_summary_add("input", "%s", inp.samples ? "samples" : "station");
     tool_summary_add("units", "%s", units.name());
+    tool_summary_add("units_detected", "%d", inp.units_detected ? 1 : 0);
     tool_summary_add("g", "%.6g", units.g);
     tool_summary_add("acc_rows", "%zu", res.res_chosen.rows);
     tool_summary_add("fit", "%s", fit_method_name(res.method));
-    tool_summary_add("tmodel", "%s", res.acc_tbias[0].kind == TKind::None ? "none" : tkind_name(res.acc_tbias[0].kind));
+    tool_summary_add("tmodel", "%s",
+                     res.acc_tbias[0].kind == TKind::None ? "none"
+                                                          : tkind_name(res.acc_tbias[0].kind));
     tool_summary_add("mag_rms_mg", "%.4f", res.res_chosen.mag_rms_mg);
     tool_summary_add("mag_max_mg", "%.4f", res.res_chosen.mag_max_mg);
     tool_summary_add("dir_rms_mg", "%.4f", res.res_chosen.dir_rms_mg);
@@ -619,8 +660,10 @@ int cmd_fit(int argc, char **argv)
     tool_summary_add("magnitude_mag_rms_mg", "%.4f", res.res_magnitude.mag_rms_mg);
     tool_summary_add("placement_max_deg", "%.3f", res.res_chosen.ang_max_deg);
     tool_summary_add("warnings", "%zu", res.warnings.size());
-    tool_summary_add("gyro", "%s", !res.have_gyro ? "not-calibrated"
-                                   : res.gyro_scale_fitted ? "calibrated" : "offset-only");
+    tool_summary_add("gyro", "%s",
+                     !res.have_gyro          ? "not-calibrated"
+                     : res.gyro_scale_fitted ? "calibrated"
+                                             : "offset-only");
     tool_summary_add("fw_rows", "%zu", fw.rows);
     tool_summary_add("fw_max_lsb", "%.2f", fw.max_lsb);
     tool_summary_add("fw_mag_rms_mg", "%.4f", fw.mag_rms_mg);
@@ -641,7 +684,8 @@ int cmd_fit(int argc, char **argv)
         tool_summary_add("record_bytes", "%zu", img.size());
         tool_summary_add("format", "%u", static_cast<unsigned>(CALREC_VERSION));
         tool_summary_add("seq", "%u", static_cast<unsigned>(seq));
-        tool_summary_add("crc", "0x%08X", static_cast<unsigned>(calrec_get_le32(&img[CALREC_OFF_CRC])));
+        tool_summary_add("crc", "0x%08X",
+                         static_cast<unsigned>(calrec_get_le32(&img[CALREC_OFF_CRC])));
     } else {
         tool_summary_add("record", "none");
     }
@@ -660,7 +704,8 @@ int load_record(const char *path, struct calrec &r, struct calrec_binding &b, ui
     }
     std::vector<uint8_t> img(data.begin(), data.end());
     if (img.size() < CALREC_OFF_BINDING + 24u) {
-        std::fprintf(stderr, "calstation: %s: %zu bytes, not a calibration record\n", path, img.size());
+        std::fprintf(stderr, "calstation: %s: %zu bytes, not a calibration record\n", path,
+                     img.size());
         return refuse("not a calibration record", "ERR_FORMAT", "not-a-record");
     }
     // Decode against the binding the image itself carries: this shows what is inside; the
@@ -760,8 +805,10 @@ int cmd_apply(int argc, char **argv)
     if (e.empty() && is_station_text(text))
         e = "'" + in + "' is a station file: apply takes a sample CSV (docs/calibration.md 4.5)";
     SampleFile sf;
+    bool detected = false;
     if (e.empty()) {
         e = parse_samples(text, units.per_g(), sf);
+        if (e.empty()) e = detect_units(text, units, sf, detected);
         if (!e.empty()) e = in + ": " + e;
     }
     if (!e.empty()) {
@@ -806,19 +853,22 @@ int cmd_apply(int argc, char **argv)
     if (!e.empty()) return write_refused(e);
     const std::vector<Segment> seg = find_segments(sf, window);
     const FaceResidual before = face_residual(sf.acc_g, seg), after = face_residual(o, seg);
-    std::printf("applied %s (firmware cal_acc_apply, fixed point) to %zu samples of %s (%s%s) -> %s; "
-                "%zu beyond +-64 g\n",
-                rec_path.c_str(), o.size(), in.c_str(), units.name(),
-                units.ms2 ? (", 1 g = " + std::to_string(units.g)).c_str() : "", out.c_str(), range);
+    std::printf(
+        "applied %s (firmware cal_acc_apply, fixed point) to %zu samples of %s (%s%s) -> %s; "
+        "%zu beyond +-64 g\n",
+        rec_path.c_str(), o.size(), in.c_str(), units.name(),
+        units.ms2 ? (", 1 g = " + std::to_string(units.g)).c_str() : "", out.c_str(), range);
     if (after.faces) {
-        std::printf("face-mean ||a|-1g| over %zu still faces: before rms %.4f mg max %.4f mg; after "
-                    "rms %.4f mg max %.4f mg\n",
-                    after.faces, before.rms_mg, before.max_mg, after.rms_mg, after.max_mg);
+        std::printf(
+            "face-mean ||a|-1g| over %zu still faces: before rms %.4f mg max %.4f mg; after "
+            "rms %.4f mg max %.4f mg\n",
+            after.faces, before.rms_mg, before.max_mg, after.rms_mg, after.max_mg);
     } else {
         std::printf("face-mean residual: n/a (no still face found in the samples)\n");
     }
     tool_summary_add("samples", "%zu", o.size());
     tool_summary_add("units", "%s", units.name());
+    tool_summary_add("units_detected", "%d", detected ? 1 : 0);
     tool_summary_add("g", "%.6g", units.g);
     tool_summary_add("range", "%zu", range);
     tool_summary_add("faces", "%zu", after.faces);
@@ -840,7 +890,8 @@ int cmd_compare(int argc, char **argv)
         const std::string a = argv[i];
         uint64_t v = 0;
         if (a == "--cycles" && i + 1 < argc) {
-            if (!parse_uint(argv[++i], 1, 100, v)) return bad_arg("--cycles", argv[i], "1..100 (decimal)");
+            if (!parse_uint(argv[++i], 1, 100, v))
+                return bad_arg("--cycles", argv[i], "1..100 (decimal)");
             cfg.cycles = static_cast<int>(v);
         } else if (a == "--seeds" && i + 1 < argc) {
             seeds.clear();
@@ -851,7 +902,8 @@ int cmd_compare(int argc, char **argv)
                 const std::string tok = s.substr(pos, c == std::string::npos ? std::string::npos
                                                                              : c - pos);
                 if (!parse_uint(tok.c_str(), 0, UINT64_MAX, v))
-                    return bad_arg("--seeds", tok.c_str(), "seeds 0..2^64-1 (decimal), comma-separated");
+                    return bad_arg("--seeds", tok.c_str(),
+                                   "seeds 0..2^64-1 (decimal), comma-separated");
                 seeds.push_back(v);
                 if (c == std::string::npos) break;
                 pos = c + 1;

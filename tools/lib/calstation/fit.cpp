@@ -448,7 +448,8 @@ std::string static_report(const Station &st, const CalResult &flip, const CalRes
         return std::string(f);
     };
     for (int s = 0; s < 3; s++) {
-        std::snprintf(b, sizeof b, "  %-26s all rows: max %s rms %s | within +-30 deg: max %s rms %s\n",
+        std::snprintf(b, sizeof b,
+                      "  %-26s all rows: max %s rms %s | within +-30 deg: max %s rms %s\n",
                       names[s], fig(stage[s], false).c_str(), fig(stage[s], true).c_str(),
                       fig(tilt[s], false).c_str(), fig(tilt[s], true).c_str());
         out += b;
@@ -552,7 +553,8 @@ std::string fit_magnitude(const Station &st, const std::vector<const Row *> &acc
         for (int j = 0; j < 3; j++)
             m0(i, j) = c.acc_misalign[i][j];
     Eigen::JacobiSVD<Eigen::Matrix3d> svd(m0, Eigen::ComputeFullU | Eigen::ComputeFullV);
-    Eigen::Matrix3d s = svd.matrixV() * svd.singularValues().asDiagonal() * svd.matrixV().transpose();
+    Eigen::Matrix3d s = svd.matrixV() * svd.singularValues().asDiagonal() *
+                        svd.matrixV().transpose();
     if ((svd.matrixU() * svd.matrixV().transpose()).determinant() < 0.0)
         return "degenerate data: the nominal-direction matrix is a reflection (an axis swapped?)";
     std::array<bool, 3> nl{};
@@ -571,18 +573,24 @@ std::string fit_magnitude(const Station &st, const std::vector<const Row *> &acc
     int np = 3 + ns;
     for (int i = 0; i < 3; i++)
         np += nl[i] ? 2 : 0;
-    auto element = [&](const Eigen::Vector3d &vk, Eigen::Vector3d &n, Eigen::Vector3d &x) {
+    // n(v) and the clamped x of one row.
+    struct Nx {
+        Eigen::Vector3d n, x;
+    };
+    auto element = [&](const Eigen::Vector3d &vk) {
+        Nx e;
         for (int i = 0; i < 3; i++) {
-            x(i) = std::clamp(vk(i), -1.25, 1.25);
-            n(i) = vk(i) + d0[i] + x(i) * x(i) * (c2[i] + x(i) * c3[i]);
+            e.x(i) = std::clamp(vk(i), -1.25, 1.25);
+            e.n(i) = vk(i) + d0[i] + e.x(i) * e.x(i) * (c2[i] + e.x(i) * c3[i]);
         }
+        return e;
     };
     for (int it = 0; it < 50; it++) {
         Eigen::MatrixXd jac(v.size(), np);
         Eigen::VectorXd r(v.size());
         for (size_t k = 0; k < v.size(); k++) {
-            Eigen::Vector3d n, x;
-            element(v[k], n, x);
+            const Nx e = element(v[k]);
+            const Eigen::Vector3d &n = e.n, &x = e.x;
             const Eigen::Vector3d a = s * n;
             const double mag = a.norm();
             if (!(mag > 0.1)) return "degenerate data: a corrected row has no magnitude";
@@ -625,8 +633,7 @@ std::string fit_magnitude(const Station &st, const std::vector<const Row *> &acc
     // The rotation from the nominal directions.
     Eigen::Matrix3d h = Eigen::Matrix3d::Zero();
     for (size_t k = 0; k < v.size(); k++) {
-        Eigen::Vector3d n, x;
-        element(v[k], n, x);
+        const Eigen::Vector3d n = element(v[k]).n;
         const Eigen::Vector3d u(acc[k]->u[0], acc[k]->u[1], acc[k]->u[2]);
         h += u * (s * n).transpose();
     }
@@ -692,11 +699,16 @@ Residuals residuals(const Station &st, const CalResult &c)
 
 bool parse_fit_method(const std::string &s, FitMethod &m)
 {
-    if (s == "auto") m = FitMethod::Auto;
-    else if (s == "nominal") m = FitMethod::Nominal;
-    else if (s == "pair") m = FitMethod::Pair;
-    else if (s == "magnitude") m = FitMethod::Magnitude;
-    else return false;
+    if (s == "auto")
+        m = FitMethod::Auto;
+    else if (s == "nominal")
+        m = FitMethod::Nominal;
+    else if (s == "pair")
+        m = FitMethod::Pair;
+    else if (s == "magnitude")
+        m = FitMethod::Magnitude;
+    else
+        return false;
     return true;
 }
 
@@ -748,8 +760,8 @@ std::string fit_station(const Station &st, const FitOptions &opt, CalResult &out
             return "placeholder temperature: every acc row (lines " +
                    std::to_string(acc.front()->line) + ".." + std::to_string(acc.back()->line) +
                    ") has temp_c = " + num(acc[0]->temp_c, 6) + " exactly, " +
-                   num(std::fabs(acc[0]->temp_c - st.t_ref_c), 4) + " degC from t_ref_c = " +
-                   num(st.t_ref_c, 6) +
+                   num(std::fabs(acc[0]->temp_c - st.t_ref_c), 4) +
+                   " degC from t_ref_c = " + num(st.t_ref_c, 6) +
                    ": give the measured temperature, or set '#@ t_ref_c=' (calstation fit "
                    "--t-ref) to the temperature of the session";
         }
@@ -801,8 +813,8 @@ std::string fit_station(const Station &st, const FitOptions &opt, CalResult &out
         for (int a = 0; a < 3; a++) {
             const TFit &fb = out.tfits.bias[k][a], &fs = out.tfits.scale[k][a];
             if (!fb.ok)
-                return "temperature model (" + std::string(tchoice_name(tm)) +
-                       "), bias axis " + kAxis[a] + ": " + fb.message;
+                return "temperature model (" + std::string(tchoice_name(tm)) + "), bias axis " +
+                       kAxis[a] + ": " + fb.message;
             if (!fs.ok)
                 return "temperature model (" + std::string(tchoice_name(tm)) +
                        "), scale factor axis " + kAxis[a] + ": " + fs.message;
@@ -855,12 +867,14 @@ std::string fit_station(const Station &st, const FitOptions &opt, CalResult &out
         // residue show in both); rows placed off their nominal directions add to the first only.
         // A second sign: the nominal fit misses 1 g by more than the per-axis pair method, whose
         // offsets are not moved by placement to first order.
-        const bool placement =
-            out.res_nominal.dir_rms_mg >
-                kPlacementRatio * out.res_nominal.mag_rms_mg + kPlacementFloorMg ||
-            out.res_nominal.mag_rms_mg > kPlacementRatio * out.res_pair.mag_rms_mg + kPlacementFloorMg;
+        const bool placement = out.res_nominal.dir_rms_mg >
+                                   kPlacementRatio * out.res_nominal.mag_rms_mg +
+                                       kPlacementFloorMg ||
+                               out.res_nominal.mag_rms_mg >
+                                   kPlacementRatio * out.res_pair.mag_rms_mg + kPlacementFloorMg;
         FitMethod method = opt.method;
-        if (method == FitMethod::Auto) method = placement ? FitMethod::Magnitude : FitMethod::Nominal;
+        if (method == FitMethod::Auto)
+            method = placement ? FitMethod::Magnitude : FitMethod::Nominal;
         for (const Row *r : acc) {
             RowResidual rr;
             rr.line = r->line;
@@ -908,21 +922,21 @@ std::string fit_station(const Station &st, const FitOptions &opt, CalResult &out
                 on += o[i] * o[i];
                 un += r.u[i] * r.u[i];
             }
-            out.rows[k].angle_deg =
-                std::acos(std::clamp(dot / std::sqrt(on * un), -1.0, 1.0)) * 180.0 /
-                3.14159265358979323846;
+            out.rows[k].angle_deg = std::acos(std::clamp(dot / std::sqrt(on * un), -1.0, 1.0)) *
+                                    180.0 / 3.14159265358979323846;
         }
         const Residuals &rc = out.res_chosen;
-        char w[480];
         if (placement) {
-            std::snprintf(w, sizeof w,
-                          "the nominal-direction fit's residual against the nominal directions (rms "
-                          "%.3f mg) is %.1f times its residual against 1 g (rms %.3f mg): the rows "
-                          "were not where the file says (placement against the %s fit: rms %.2f "
-                          "deg, max %.2f deg; a hand-placed cube?). Judge the calibration by the "
-                          "||a|-1g| column",
-                          rn.dir_rms_mg, rn.dir_rms_mg / std::max(rn.mag_rms_mg, 1e-4),
-                          rn.mag_rms_mg, fit_method_name(method), rc.ang_rms_deg, rc.ang_max_deg);
+            char w[480];
+            std::snprintf(
+                w, sizeof w,
+                "the nominal-direction fit's residual against the nominal directions (rms "
+                "%.3f mg) is %.1f times its residual against 1 g (rms %.3f mg): the rows "
+                "were not where the file says (placement against the %s fit: rms %.2f "
+                "deg, max %.2f deg; a hand-placed cube?). Judge the calibration by the "
+                "||a|-1g| column",
+                rn.dir_rms_mg, rn.dir_rms_mg / std::max(rn.mag_rms_mg, 1e-4), rn.mag_rms_mg,
+                fit_method_name(method), rc.ang_rms_deg, rc.ang_max_deg);
             out.warnings.push_back(w);
             if (method != FitMethod::Magnitude) {
                 std::snprintf(w, sizeof w,
@@ -1055,9 +1069,11 @@ std::string fit_station(const Station &st, const FitOptions &opt, CalResult &out
         rep += std::string("  chosen for the record: ") + tchoice_name(out.tmodel) +
                (out.tmodel == TChoice::Best ? " (= lorentz+cubic)" : "") + "\n";
     }
-    if (out.one_temperature && opt.tmodel_auto && opt.tmodel != TChoice::None && out.tmodel == TChoice::None)
-        rep += "temperature: one soak temperature only: no temperature model (as --tmodel none); the "
-               "record holds the offsets and gains of this temperature\n";
+    if (out.one_temperature && opt.tmodel_auto && opt.tmodel != TChoice::None &&
+        out.tmodel == TChoice::None)
+        rep +=
+            "temperature: one soak temperature only: no temperature model (as --tmodel none); the "
+            "record holds the offsets and gains of this temperature\n";
     rep += static_report(st, stage_flip, stage_lin, nominal_for_report);
     if (!out.have_nonlin)
         rep += "nonlinearity: not fitted (needs a tilt sweep of >= 5 positions per axis)\n";
@@ -1075,8 +1091,8 @@ std::string fit_station(const Station &st, const FitOptions &opt, CalResult &out
     line("per-axis pair", out.res_pair);
     line("nominal directions", out.res_nominal);
     line("magnitude + rotation", out.res_magnitude);
-    std::snprintf(b, sizeof b, "  chosen for the record: %s (--fit %s)\n", fit_method_name(out.method),
-                  fit_method_name(opt.method));
+    std::snprintf(b, sizeof b, "  chosen for the record: %s (--fit %s)\n",
+                  fit_method_name(out.method), fit_method_name(opt.method));
     rep += b;
     rep += "  ||a|-1g| needs no placement; |a-u| and the angle also hold every error of where the "
            "rows were placed\n";

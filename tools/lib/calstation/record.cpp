@@ -147,8 +147,10 @@ std::string firmware_check(const Station &st, const struct calrec &rec, FwCheck 
         bool within30 = false;
         for (int i = 0; i < 3; i++)
             within30 |= std::fabs(row.u[i]) > 0.05 && std::fabs(row.u[i]) <= 0.51;
-        const double mag = std::sqrt(static_cast<double>(o[0]) * o[0] + static_cast<double>(o[1]) * o[1] +
-                                     static_cast<double>(o[2]) * o[2]) / kQ16;
+        const double mag = std::sqrt(static_cast<double>(o[0]) * o[0] +
+                                     static_cast<double>(o[1]) * o[1] +
+                                     static_cast<double>(o[2]) * o[2]) /
+                           kQ16;
         const double em = std::fabs(mag - 1.0) * 1e3;
         out.row_mag_mg.push_back((mag - 1.0) * 1e3);
         out.mag_max_mg = std::fmax(out.mag_max_mg, em);
@@ -185,7 +187,8 @@ std::string apply_firmware(const struct calrec &rec, const std::vector<std::arra
     struct cal_acc acc;
     fx_q16_t t = q(temp_c.empty() ? t_default : temp_c[0], kQ16);
     int e = cal_acc_init(&acc, &r, t);
-    if (e != INC_OK) return std::string("firmware: cal_acc_init refused the record (") + inc_err_name(e) + ")";
+    if (e != INC_OK)
+        return std::string("firmware: cal_acc_init refused the record (") + inc_err_name(e) + ")";
     for (size_t k = 0; k < in_g.size(); k++) {
         if (!temp_c.empty()) {
             const fx_q16_t tk = q(temp_c[k], kQ16);

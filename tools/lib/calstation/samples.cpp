@@ -79,7 +79,8 @@ bool is_station_text(const std::string &text)
     size_t p = 0;
     while (p < text.size()) {
         const size_t e = text.find('\n', p);
-        const std::string l = trim(text.substr(p, e == std::string::npos ? std::string::npos : e - p));
+        const std::string l = trim(
+            text.substr(p, e == std::string::npos ? std::string::npos : e - p));
         if (l.rfind("#@", 0) == 0) return true;
         if (!l.empty() && l[0] != '#') return l.rfind("block,kind,", 0) == 0;
         if (e == std::string::npos) break;
@@ -102,7 +103,8 @@ std::string parse_samples(const std::string &text, double unit_g, SampleFile &ou
     };
     while (p < text.size()) {
         const size_t e = text.find('\n', p);
-        const std::string l = trim(text.substr(p, e == std::string::npos ? std::string::npos : e - p));
+        const std::string l = trim(
+            text.substr(p, e == std::string::npos ? std::string::npos : e - p));
         p = e == std::string::npos ? text.size() : e + 1;
         line++;
         if (l.empty()) continue;
@@ -124,16 +126,18 @@ std::string parse_samples(const std::string &text, double unit_g, SampleFile &ou
                     }
                 }
                 if (out.col[a] < 0) {
-                    return "line " + std::to_string(line) +
-                           ": no acceleration column for axis " + std::string(1, "xyz"[a]) +
+                    return "line " + std::to_string(line) + ": no acceleration column for axis " +
+                           std::string(1, "xyz"[a]) +
                            " in the header (ax/acc_x/accel_x/x ...: docs/calibration.md 4.5)";
                 }
             }
             for (size_t c = 0; c < f.size(); c++) {
                 const std::string k = key_of(f[c]);
-                if (out.col_temp < 0 && (k == "temp_c" || k == "temp" || k == "temperature" || k == "t_c"))
+                if (out.col_temp < 0 &&
+                    (k == "temp_c" || k == "temp" || k == "temperature" || k == "t_c"))
                     out.col_temp = static_cast<int>(c);
-                if (out.col_time < 0 && (k == "t" || k == "time" || k == "time_s" || k == "timestamp"))
+                if (out.col_time < 0 &&
+                    (k == "t" || k == "time" || k == "time_s" || k == "timestamp"))
                     out.col_time = static_cast<int>(c);
             }
             continue;
@@ -153,14 +157,15 @@ std::string parse_samples(const std::string &text, double unit_g, SampleFile &ou
                 return "line " + std::to_string(line) + ", column '" + out.header[out.col[k]] +
                        "': beyond +-64 g (wrong --units?)";
         }
-        double t = 0.0, tm = 0.0;
         if (out.col_temp >= 0) {
+            double t = 0.0;
             if (!number(f[out.col_temp], t) || t < -100.0 || t > 200.0)
                 return "line " + std::to_string(line) + ", column '" + out.header[out.col_temp] +
                        "': '" + f[out.col_temp] + "' is not a temperature in -100..200 degC";
             out.temp_c.push_back(t);
         }
         if (out.col_time >= 0) {
+            double tm = 0.0;
             if (!number(f[out.col_time], tm))
                 return "line " + std::to_string(line) + ", column '" + out.header[out.col_time] +
                        "': '" + f[out.col_time] + "' is not a finite number";
@@ -186,7 +191,8 @@ std::vector<Segment> find_segments(const SampleFile &s, size_t win)
                 dt.push_back(s.time_s[k] - s.time_s[k - 1]);
             std::nth_element(dt.begin(), dt.begin() + dt.size() / 2, dt.end());
             const double d = dt[dt.size() / 2];
-            if (d > 0.0 && d < 1.0) win = static_cast<size_t>(std::clamp(std::lround(0.5 / d), 5L, 100000L));
+            if (d > 0.0 && d < 1.0)
+                win = static_cast<size_t>(std::clamp(std::lround(0.5 / d), 5L, 100000L));
         }
     }
     std::vector<Segment> out;
@@ -242,7 +248,8 @@ std::vector<Segment> find_segments(const SampleFile &s, size_t win)
             const double m = std::sqrt(g.mean[0] * g.mean[0] + g.mean[1] * g.mean[1] +
                                        g.mean[2] * g.mean[2]);
             for (int a = 0; a < 3; a++) {
-                if (m > 0.5 && std::fabs(g.mean[a]) > std::cos(25.0 * 3.14159265358979323846 / 180.0) * m) {
+                if (m > 0.5 &&
+                    std::fabs(g.mean[a]) > std::cos(25.0 * 3.14159265358979323846 / 180.0) * m) {
                     g.axis = a;
                     g.sign = g.mean[a] > 0 ? 1 : -1;
                 }
@@ -294,7 +301,8 @@ FaceResidual face_residual(const std::vector<std::array<double, 3>> &acc,
         if (g.axis < 0 || g.end > acc.size()) continue;
         double m = 0.0;
         for (size_t k = g.begin; k < g.end; k++)
-            m += std::sqrt(acc[k][0] * acc[k][0] + acc[k][1] * acc[k][1] + acc[k][2] * acc[k][2]) - 1.0;
+            m += std::sqrt(acc[k][0] * acc[k][0] + acc[k][1] * acc[k][1] + acc[k][2] * acc[k][2]) -
+                 1.0;
         m = m / static_cast<double>(g.end - g.begin) * 1e3;
         r.per_face_mg.push_back(m);
         ss += m * m;
@@ -313,7 +321,8 @@ std::string read_input(const std::string &path, size_t max_bytes, std::string &o
     const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
     if (fd < 0) return "cannot open '" + path + "': " + std::strerror(errno);
     struct stat sb;
-    if (fstat(fd, &sb) != 0 || !(S_ISREG(sb.st_mode) || S_ISFIFO(sb.st_mode) || S_ISCHR(sb.st_mode))) {
+    if (fstat(fd, &sb) != 0 ||
+        !(S_ISREG(sb.st_mode) || S_ISFIFO(sb.st_mode) || S_ISCHR(sb.st_mode))) {
         const bool dir = S_ISDIR(sb.st_mode);
         ::close(fd);
         return "cannot open '" + path + "': " + (dir ? "a directory" : "not a regular file");
@@ -330,7 +339,8 @@ std::string read_input(const std::string &path, size_t max_bytes, std::string &o
         if (r == 0) break;
         if (out.size() + static_cast<size_t>(r) > max_bytes) {
             ::close(fd);
-            return "cannot read '" + path + "': larger than " + std::to_string(max_bytes) + " bytes";
+            return "cannot read '" + path + "': larger than " + std::to_string(max_bytes) +
+                   " bytes";
         }
         out.append(buf, static_cast<size_t>(r));
     }
@@ -370,7 +380,8 @@ std::string write_output(const std::string &path, const std::string &data,
         if (S_ISLNK(sb.st_mode)) {
             char *rp = realpath(path.c_str(), nullptr);
             if (rp == nullptr)
-                return "cannot write '" + path + "': a symlink to nothing (" + std::strerror(errno) + ")";
+                return "cannot write '" + path + "': a symlink to nothing (" +
+                       std::strerror(errno) + ")";
             target = rp;
             std::free(rp);
             exists = stat(target.c_str(), &sb) == 0;
@@ -388,11 +399,13 @@ std::string write_output(const std::string &path, const std::string &data,
             const int fd = ::open(target.c_str(), O_WRONLY | O_CLOEXEC);
             if (fd < 0) return "cannot write '" + path + "': " + std::strerror(errno);
             std::string e = write_all(fd, data, path);
-            if (::close(fd) != 0 && e.empty()) e = "cannot write '" + path + "': " + std::strerror(errno);
+            if (::close(fd) != 0 && e.empty())
+                e = "cannot write '" + path + "': " + std::strerror(errno);
             return e;
         }
         if (!S_ISREG(sb.st_mode))
-            return "cannot write '" + path + "': " + (S_ISDIR(sb.st_mode) ? "a directory" : "not a regular file");
+            return "cannot write '" + path +
+                   "': " + (S_ISDIR(sb.st_mode) ? "a directory" : "not a regular file");
     }
     std::string tmpl = target + ".tmp-XXXXXX";
     std::vector<char> tb(tmpl.begin(), tmpl.end());

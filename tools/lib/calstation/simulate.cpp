@@ -32,7 +32,7 @@ class Sim
             sim_calpart_seeded(&prm, cfg.part.curve_seed);
         }
         sim_calpart_init(&part_, &prm, cfg.noise_seed);
-        sim_rng_seed(&trng_, cfg.noise_seed ^ 0x54454D50ull); // "TEMP"
+        sim_rng_seed(&trng_, cfg.noise_seed ^ 0x54454D50ull);     // "TEMP"
         sim_rng_seed(&prng_, cfg.placement_seed ^ 0x504C4143ull); // "PLAC"
         st_.acc_lsb_g = kSimAccLsbG;
         st_.gyro_lsb_dps = kSimGyroLsbDps;
@@ -115,9 +115,9 @@ class Sim
             // and away from y; u = the normal of the face pointing up, by its components.
             const double ex[3] = {1.0, 0.0, 0.0};
             const double ey[3] = {std::sin(d), std::cos(d), 0.0};
-            const double ez[3] = {std::sin(d), -std::sin(d / 2.0),
-                                  std::sqrt(1.0 - std::sin(d) * std::sin(d) -
-                                            std::sin(d / 2.0) * std::sin(d / 2.0))};
+            const double ez[3] = {
+                std::sin(d), -std::sin(d / 2.0),
+                std::sqrt(1.0 - std::sin(d) * std::sin(d) - std::sin(d / 2.0) * std::sin(d / 2.0))};
             for (int i = 0; i < 3; i++)
                 u[i] = n[0] * ex[i] + n[1] * ey[i] + n[2] * ez[i];
             const double m = std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
@@ -126,8 +126,11 @@ class Sim
         }
         if (cfg_.placement_deg > 0.0) {
             // A random unit vector p perpendicular to u; tilt u toward p by theta.
-            double p[3], r[3] = {sim_rng_gauss(&prng_), sim_rng_gauss(&prng_), sim_rng_gauss(&prng_)};
-            const double th = cfg_.placement_deg * (0.5 + 0.5 * sim_rng_uniform(&prng_)) * kPi / 180.0;
+            double p[3];
+            const double r[3] = {sim_rng_gauss(&prng_), sim_rng_gauss(&prng_),
+                                 sim_rng_gauss(&prng_)};
+            const double th = cfg_.placement_deg * (0.5 + 0.5 * sim_rng_uniform(&prng_)) * kPi /
+                              180.0;
             const double d = r[0] * u[0] + r[1] * u[1] + r[2] * u[2];
             for (int i = 0; i < 3; i++)
                 p[i] = r[i] - d * u[i];

@@ -69,8 +69,8 @@ struct FitOptions {
 // Residuals of a correction over the static acc rows (each row is a position mean), mg / deg.
 struct Residuals {
     size_t rows = 0;
-    double mag_rms_mg = 0.0, mag_max_mg = 0.0; // | |a| - 1 g |: needs no placement
-    double dir_rms_mg = 0.0, dir_max_mg = 0.0; // | a - u |: against the nominal directions
+    double mag_rms_mg = 0.0, mag_max_mg = 0.0;   // | |a| - 1 g |: needs no placement
+    double dir_rms_mg = 0.0, dir_max_mg = 0.0;   // | a - u |: against the nominal directions
     double ang_rms_deg = 0.0, ang_max_deg = 0.0; // angle between a and u
 };
 
