@@ -286,7 +286,12 @@ static void test_binding_rules(void)
     CHECK_OK(calrec_check_binding(&b));
     b.family = 0;
     CHECK_ERR(calrec_check_binding(&b), INC_ERR_INVAL);
-    b.family = 4;
+    b.family = 5; /* the first family not in enum calrec_family */
+    CHECK_ERR(calrec_check_binding(&b), INC_ERR_INVAL);
+    b.family = CALREC_FAMILY_GENERIC; /* an IMU no driver reads: the common ranges only */
+    b.revision = 7;
+    CHECK_OK(calrec_check_binding(&b));
+    b.product = 0;
     CHECK_ERR(calrec_check_binding(&b), INC_ERR_INVAL);
     fix_binding(&b);
     b.product = 0;

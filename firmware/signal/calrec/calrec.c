@@ -123,6 +123,7 @@ int calrec_check_binding(const struct calrec_binding *b)
             return INC_ERR_INVAL;
         }
         return INC_OK;
+    case CALREC_FAMILY_GENERIC: return INC_OK; /* the common ranges above only */
     default: return INC_ERR_INVAL;
     }
 }

@@ -28,6 +28,14 @@ constexpr double kLimTBiasG = 0.5;
 constexpr double kLimTScale = 0.125;
 constexpr double kLimGyroOffset = 30.0;
 constexpr double kSoakGapC = 2.0;
+// The placement check (FitMethod::Auto): placement errors are declared when the nominal fit's
+// rms residual against the nominal directions exceeds kPlacementRatio times its rms residual
+// against 1 g plus kPlacementFloorMg, or its residual against 1 g exceeds kPlacementRatio times
+// the per-axis pair method's plus the floor. On the simulated positioner: 0.36 against 0.32 mg,
+// and 0.32 against 0.37 mg; 2 deg of hand placement: about 22 against 10 mg, and 10 against
+// 0.5 mg.
+constexpr double kPlacementRatio = 2.0;
+constexpr double kPlacementFloorMg = 0.05;
 
 // a with `prec` significant digits (g) or, for prec < 0, -prec decimals (f).
 std::string num(double a, int prec)
@@ -388,6 +396,14 @@ std::string static_report(const Station &st, const CalResult &flip, const CalRes
         int n = 0;
     };
     Acc stage[3], tilt[3];
+    // The rows of the soak nearest t_ref (the ambient rows; a session at one temperature: all).
+    double t_near = st.t_ref_c, best = 1e300;
+    for (const auto &r : st.rows) {
+        if (r.kind == RowKind::Acc && std::fabs(r.temp_c - st.t_ref_c) < best) {
+            best = std::fabs(r.temp_c - st.t_ref_c);
+            t_near = r.temp_c;
+        }
+    }
     CalResult diag = flip;
     for (int i = 0; i < 3; i++) {
         for (int j = 0; j < 3; j++)
@@ -395,7 +411,7 @@ std::string static_report(const Station &st, const CalResult &flip, const CalRes
         diag.acc_nonlin[i] = {0, 0, 0, 0};
     }
     for (const auto &r : st.rows) {
-        if (r.kind != RowKind::Acc || std::fabs(r.temp_c - st.t_ref_c) > kSoakGapC) continue;
+        if (r.kind != RowKind::Acc || std::fabs(r.temp_c - t_near) > kSoakGapC) continue;
         const std::array<double, 3> raw = {r.v[0] * st.acc_lsb_g, r.v[1] * st.acc_lsb_g,
                                            r.v[2] * st.acc_lsb_g};
         const CalResult *cs[3] = {&diag, &lin, &c};
@@ -417,18 +433,28 @@ std::string static_report(const Station &st, const CalResult &flip, const CalRes
             }
         }
     }
-    std::string out = "static accuracy at t_ref (ambient rows), |a_corrected - a_true| in mg:\n";
+    char b[240];
+    std::snprintf(b, sizeof b,
+                  "static accuracy of the nominal-direction fit at %.1f degC (the rows within "
+                  "2 degC of the soak nearest t_ref_c = %.1f), |a_corrected - u| in mg:\n",
+                  t_near, st.t_ref_c);
+    std::string out = b;
     const char *names[3] = {"flip offset/gain + temp.", "+ misalignment (linear LS)",
-                            "+ nonlinearity (record)"};
+                            "+ nonlinearity"};
+    auto fig = [](const Acc &a, bool rms) {
+        char f[32];
+        if (!a.n) return std::string("    n/a");
+        std::snprintf(f, sizeof f, "%7.3f", rms ? std::sqrt(a.ss / a.n) : a.max);
+        return std::string(f);
+    };
     for (int s = 0; s < 3; s++) {
-        char b[200];
-        std::snprintf(
-            b, sizeof b,
-            "  %-26s all rows: max %7.3f rms %7.3f | within +-30 deg: max %7.3f rms %7.3f\n",
-            names[s], stage[s].max, stage[s].n ? std::sqrt(stage[s].ss / stage[s].n) : 0.0,
-            tilt[s].max, tilt[s].n ? std::sqrt(tilt[s].ss / tilt[s].n) : 0.0);
+        std::snprintf(b, sizeof b,
+                      "  %-26s all rows: max %s rms %s | within +-30 deg: max %s rms %s\n",
+                      names[s], fig(stage[s], false).c_str(), fig(stage[s], true).c_str(),
+                      fig(tilt[s], false).c_str(), fig(tilt[s], true).c_str());
         out += b;
     }
+    if (!tilt[0].n) out += "  (no tilt rows within +-30 deg: n/a)\n";
     return out;
 }
 
@@ -441,7 +467,7 @@ namespace
 // of P_i . f - c0 [- c2 v^2 - c3 v^3] = v over every acc row; folds c0 into the offset and sets
 // M = P^-1 and the nonlinearity terms (only with allow_nl and >= 5 distinct positions).
 std::string fit_elements(const Station &st, const std::vector<const Row *> &acc, CalResult &out,
-                         bool allow_nl)
+                         bool allow_nl, bool fit_c0 = true)
 {
     Eigen::Matrix3d p = Eigen::Matrix3d::Identity();
     for (int i = 0; i < 3; i++) {
@@ -450,7 +476,8 @@ std::string fit_elements(const Station &st, const std::vector<const Row *> &acc,
             distinct.insert(std::lround(r->u[i] * 100.0));
         const bool nl = allow_nl && distinct.size() >= 5;
         out.have_nonlin |= nl;
-        const int ncol = nl ? 6 : 4;
+        const int nc0 = fit_c0 ? 4 : 3; // columns before the nonlinearity terms
+        const int ncol = nl ? nc0 + 2 : nc0;
         Eigen::MatrixXd m(acc.size(), ncol);
         Eigen::VectorXd y(acc.size());
         for (size_t k = 0; k < acc.size(); k++) {
@@ -461,10 +488,10 @@ std::string fit_elements(const Station &st, const std::vector<const Row *> &acc,
             m(k, 0) = r.u[0];
             m(k, 1) = r.u[1];
             m(k, 2) = r.u[2];
-            m(k, 3) = -1.0;
+            if (fit_c0) m(k, 3) = -1.0;
             if (nl) {
-                m(k, 4) = -v * v;
-                m(k, 5) = -v * v * v;
+                m(k, nc0) = -v * v;
+                m(k, nc0 + 1) = -v * v * v;
             }
             y(k) = v;
         }
@@ -479,8 +506,8 @@ std::string fit_elements(const Station &st, const std::vector<const Row *> &acc,
             p(i, j) = c(j);
         // c0 folded into the offset (n = v + c0 == (r - (b - k c0)) / k; k(T) differs from the
         // gain at t_ref by the tscale deviation, < 1e-2 * c0).
-        out.acc_offset[i] -= out.acc_gain[i] * c(3);
-        out.acc_nonlin[i] = {0.0, 0.0, nl ? c(4) : 0.0, nl ? c(5) : 0.0};
+        if (fit_c0) out.acc_offset[i] -= out.acc_gain[i] * c(3);
+        out.acc_nonlin[i] = {0.0, 0.0, nl ? c(nc0) : 0.0, nl ? c(nc0 + 1) : 0.0};
     }
     if (std::fabs(p.determinant()) < 1e-6) {
         return "degenerate data: the sensed directions are (nearly) parallel; check the station positions";
@@ -494,11 +521,212 @@ std::string fit_elements(const Station &st, const std::vector<const Row *> &acc,
     return "";
 }
 
+
+// The temperature-corrected element outputs v of every acc row (fit_elements' v).
+std::vector<Eigen::Vector3d> element_outputs(const Station &st, const std::vector<const Row *> &acc,
+                                             const CalResult &c)
+{
+    std::vector<Eigen::Vector3d> v(acc.size());
+    for (size_t k = 0; k < acc.size(); k++) {
+        for (int i = 0; i < 3; i++) {
+            const double b = c.acc_offset[i] + c.acc_tbias[i].eval(acc[k]->temp_c);
+            const double g = c.acc_gain[i] * (1.0 + c.acc_tscale[i].eval(acc[k]->temp_c));
+            v[k](i) = (acc[k]->v[i] * st.acc_lsb_g - b) / g;
+        }
+    }
+    return v;
+}
+
+// Step 3, magnitude form: starting from the nominal fit c (M = R0 S0, its polar decomposition),
+// Gauss-Newton on r_k = |S n(v_k)| - 1 g over every acc row, with n = v + d0 + c2 x^2 + c3 x^3
+// (x = v clamped as the firmware does), parameters d0 (3), the symmetric S (6) and, on the
+// axes where the nominal fit had them, c2 and c3. Each step is the minimum-norm least-squares
+// solution, so what the rows do not determine (e.g. the cross-axis terms from six faces only,
+// or c2 against d0 on the faces) stays at the nominal fit's value. Then R = the rotation that
+// best maps S n onto the nominal directions (orthogonal Procrustes), M = R S, d0 folded into
+// acc_offset.
+std::string fit_magnitude(const Station &st, const std::vector<const Row *> &acc, CalResult &c)
+{
+    const std::vector<Eigen::Vector3d> v = element_outputs(st, acc, c);
+    Eigen::Matrix3d m0;
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            m0(i, j) = c.acc_misalign[i][j];
+    Eigen::JacobiSVD<Eigen::Matrix3d> svd(m0, Eigen::ComputeFullU | Eigen::ComputeFullV);
+    Eigen::Matrix3d s = svd.matrixV() * svd.singularValues().asDiagonal() *
+                        svd.matrixV().transpose();
+    if ((svd.matrixU() * svd.matrixV().transpose()).determinant() < 0.0)
+        return "degenerate data: the nominal-direction matrix is a reflection (an axis swapped?)";
+    std::array<bool, 3> nl{};
+    std::array<double, 3> d0{}, c2{}, c3{};
+    for (int i = 0; i < 3; i++) {
+        c2[i] = c.acc_nonlin[i][2];
+        c3[i] = c.acc_nonlin[i][3];
+        nl[i] = false; // the nonlinearity stays the nominal fit's (see below)
+    }
+    static const int kSa[6] = {0, 1, 2, 0, 0, 1}, kSb[6] = {0, 1, 2, 1, 2, 2};
+    // The symmetric part's off-diagonal terms stay the nominal fit's: |S n| sees them only through
+    // n_i n_j, which is zero to first order on the faces and on single-axis tilt sweeps, so the
+    // magnitudes cannot determine them (on the positioner they took any value the temperature
+    // hysteresis wanted, 0.35 and more). The offsets and the diagonal are what placement moves.
+    const int ns = 3;
+    int np = 3 + ns;
+    for (int i = 0; i < 3; i++)
+        np += nl[i] ? 2 : 0;
+    // n(v) and the clamped x of one row.
+    struct Nx {
+        Eigen::Vector3d n, x;
+    };
+    auto element = [&](const Eigen::Vector3d &vk) {
+        Nx e;
+        for (int i = 0; i < 3; i++) {
+            e.x(i) = std::clamp(vk(i), -1.25, 1.25);
+            e.n(i) = vk(i) + d0[i] + e.x(i) * e.x(i) * (c2[i] + e.x(i) * c3[i]);
+        }
+        return e;
+    };
+    for (int it = 0; it < 50; it++) {
+        Eigen::MatrixXd jac(v.size(), np);
+        Eigen::VectorXd r(v.size());
+        for (size_t k = 0; k < v.size(); k++) {
+            const Nx e = element(v[k]);
+            const Eigen::Vector3d &n = e.n, &x = e.x;
+            const Eigen::Vector3d a = s * n;
+            const double mag = a.norm();
+            if (!(mag > 0.1)) return "degenerate data: a corrected row has no magnitude";
+            r(k) = mag - 1.0;
+            const Eigen::RowVector3d g = a.transpose() / mag;
+            const Eigen::RowVector3d gs = g * s; // d|a|/dn
+            int col = 0;
+            for (int j = 0; j < 3; j++)
+                jac(k, col++) = gs(j);
+            for (int q = 0; q < ns; q++) {
+                const int ia = kSa[q], ib = kSb[q];
+                jac(k, col++) = ia == ib ? g(ia) * n(ia) : g(ia) * n(ib) + g(ib) * n(ia);
+            }
+            for (int j = 0; j < 3; j++) {
+                if (!nl[j]) continue;
+                jac(k, col++) = gs(j) * x(j) * x(j);
+                jac(k, col++) = gs(j) * x(j) * x(j) * x(j);
+            }
+        }
+        Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod(jac);
+        cod.setThreshold(1e-9);
+        const Eigen::VectorXd d = cod.solve(-r);
+        if (!d.allFinite()) return "degenerate data: the magnitude fit diverged";
+        int col = 0;
+        for (int j = 0; j < 3; j++)
+            d0[j] += d(col++);
+        for (int q = 0; q < ns; q++) {
+            const double dv = d(col++);
+            s(kSa[q], kSb[q]) += dv;
+            if (kSa[q] != kSb[q]) s(kSb[q], kSa[q]) += dv;
+        }
+        for (int j = 0; j < 3; j++) {
+            if (!nl[j]) continue;
+            c2[j] += d(col++);
+            c3[j] += d(col++);
+        }
+        if (d.cwiseAbs().maxCoeff() < 1e-13) break;
+    }
+
+    // The rotation from the nominal directions.
+    Eigen::Matrix3d h = Eigen::Matrix3d::Zero();
+    for (size_t k = 0; k < v.size(); k++) {
+        const Eigen::Vector3d n = element(v[k]).n;
+        const Eigen::Vector3d u(acc[k]->u[0], acc[k]->u[1], acc[k]->u[2]);
+        h += u * (s * n).transpose();
+    }
+    Eigen::JacobiSVD<Eigen::Matrix3d> hs(h, Eigen::ComputeFullU | Eigen::ComputeFullV);
+    Eigen::Matrix3d fix = Eigen::Matrix3d::Identity();
+    if ((hs.matrixU() * hs.matrixV().transpose()).determinant() < 0.0) fix(2, 2) = -1.0;
+    const Eigen::Matrix3d rot = hs.matrixU() * fix * hs.matrixV().transpose();
+    const Eigen::Matrix3d m = rot * s;
+    for (int i = 0; i < 3; i++) {
+        for (int j = 0; j < 3; j++)
+            c.acc_misalign[i][j] = m(i, j);
+        c.acc_offset[i] -= c.acc_gain[i] * d0[i];
+        c.acc_nonlin[i] = {0.0, 0.0, c2[i], c3[i]};
+    }
+    return "";
+}
+
+double row_mag_mg(const CalResult &c, const Station &st, const Row &r)
+{
+    const std::array<double, 3> raw = {r.v[0] * st.acc_lsb_g, r.v[1] * st.acc_lsb_g,
+                                       r.v[2] * st.acc_lsb_g};
+    const auto o = apply_double(c, raw, r.temp_c);
+    return (std::sqrt(o[0] * o[0] + o[1] * o[1] + o[2] * o[2]) - 1.0) * 1e3;
+}
+
 } // namespace
+
+Residuals residuals(const Station &st, const CalResult &c)
+{
+    Residuals r;
+    double ms = 0.0, ds = 0.0, as = 0.0;
+    for (const auto &row : st.rows) {
+        if (row.kind != RowKind::Acc) continue;
+        const std::array<double, 3> raw = {row.v[0] * st.acc_lsb_g, row.v[1] * st.acc_lsb_g,
+                                           row.v[2] * st.acc_lsb_g};
+        const auto o = apply_double(c, raw, row.temp_c);
+        const double mag = std::sqrt(o[0] * o[0] + o[1] * o[1] + o[2] * o[2]);
+        const double em = std::fabs(mag - 1.0) * 1e3;
+        double e2 = 0.0, dot = 0.0, un = 0.0;
+        for (int i = 0; i < 3; i++) {
+            e2 += (o[i] - row.u[i]) * (o[i] - row.u[i]);
+            dot += o[i] * row.u[i];
+            un += row.u[i] * row.u[i];
+        }
+        const double ed = std::sqrt(e2) * 1e3;
+        const double cosang = std::clamp(dot / (mag * std::sqrt(un)), -1.0, 1.0);
+        const double ang = std::acos(cosang) * 180.0 / 3.14159265358979323846;
+        r.mag_max_mg = std::max(r.mag_max_mg, em);
+        r.dir_max_mg = std::max(r.dir_max_mg, ed);
+        r.ang_max_deg = std::max(r.ang_max_deg, ang);
+        ms += em * em;
+        ds += ed * ed;
+        as += ang * ang;
+        r.rows++;
+    }
+    if (r.rows) {
+        r.mag_rms_mg = std::sqrt(ms / r.rows);
+        r.dir_rms_mg = std::sqrt(ds / r.rows);
+        r.ang_rms_deg = std::sqrt(as / r.rows);
+    }
+    return r;
+}
+
+bool parse_fit_method(const std::string &s, FitMethod &m)
+{
+    if (s == "auto")
+        m = FitMethod::Auto;
+    else if (s == "nominal")
+        m = FitMethod::Nominal;
+    else if (s == "pair")
+        m = FitMethod::Pair;
+    else if (s == "magnitude")
+        m = FitMethod::Magnitude;
+    else
+        return false;
+    return true;
+}
+
+const char *fit_method_name(FitMethod m)
+{
+    switch (m) {
+    case FitMethod::Auto: return "auto";
+    case FitMethod::Nominal: return "nominal";
+    case FitMethod::Pair: return "pair";
+    case FitMethod::Magnitude: return "magnitude";
+    }
+    return "?";
+}
 
 std::string fit_station(const Station &st, const FitOptions &opt, CalResult &out)
 {
     out = CalResult{};
+    TChoice tm = opt.tmodel;
     // ---- Sanity of the data set ----
     std::vector<const Row *> acc;
     for (const auto &r : st.rows) {
@@ -522,6 +750,22 @@ std::string fit_station(const Station &st, const FitOptions &opt, CalResult &out
                    "): offsets, gains and cross-axis terms cannot be separated";
         }
     }
+    {
+        // A placeholder temperature (every row the same exact value, far from t_ref) would
+        // otherwise put every row outside the t_ref soak: refused, not reported as zeros.
+        bool same_t = true;
+        for (const Row *r : acc)
+            same_t &= r->temp_c == acc[0]->temp_c;
+        if (same_t && std::fabs(acc[0]->temp_c - st.t_ref_c) > kSoakGapC) {
+            return "placeholder temperature: every acc row (lines " +
+                   std::to_string(acc.front()->line) + ".." + std::to_string(acc.back()->line) +
+                   ") has temp_c = " + num(acc[0]->temp_c, 6) + " exactly, " +
+                   num(std::fabs(acc[0]->temp_c - st.t_ref_c), 4) +
+                   " degC from t_ref_c = " + num(st.t_ref_c, 6) +
+                   ": give the measured temperature, or set '#@ t_ref_c=' (calstation fit "
+                   "--t-ref) to the temperature of the session";
+        }
+    }
     // ---- 1. flip pairs per block ----
     std::string e = block_measurements(st, out.blocks);
     if (!e.empty()) return e;
@@ -536,11 +780,13 @@ std::string fit_station(const Station &st, const FitOptions &opt, CalResult &out
     }
     out.soaks = soak_points(out.blocks);
     const double t_ref = st.t_ref_c;
+    out.one_temperature = out.soaks.size() < 2;
+    if (out.one_temperature && opt.tmodel_auto && tm != TChoice::None) tm = TChoice::None;
 
     // ---- 2. temperature ----
-    out.tmodel = opt.tmodel;
+    out.tmodel = tm;
     std::array<TModel, 3> bmodel{}, smodel{};
-    if (opt.tmodel == TChoice::None) {
+    if (tm == TChoice::None) {
         for (int a = 0; a < 3; a++) {
             std::vector<double> bs, ks;
             for (const auto &b : out.blocks) {
@@ -563,14 +809,14 @@ std::string fit_station(const Station &st, const FitOptions &opt, CalResult &out
                    "for an ambient-only calibration";
         }
         out.tfits = fit_temperature(out.blocks, out.soaks, t_ref);
-        const int k = choice_index(opt.tmodel);
+        const int k = choice_index(tm);
         for (int a = 0; a < 3; a++) {
             const TFit &fb = out.tfits.bias[k][a], &fs = out.tfits.scale[k][a];
             if (!fb.ok)
-                return "temperature model (" + std::string(tchoice_name(opt.tmodel)) +
-                       "), bias axis " + kAxis[a] + ": " + fb.message;
+                return "temperature model (" + std::string(tchoice_name(tm)) + "), bias axis " +
+                       kAxis[a] + ": " + fb.message;
             if (!fs.ok)
-                return "temperature model (" + std::string(tchoice_name(opt.tmodel)) +
+                return "temperature model (" + std::string(tchoice_name(tm)) +
                        "), scale factor axis " + kAxis[a] + ": " + fs.message;
             bmodel[a] = fb.model;
             smodel[a] = fs.model;
@@ -579,7 +825,7 @@ std::string fit_station(const Station &st, const FitOptions &opt, CalResult &out
     for (int a = 0; a < 3; a++) {
         out.acc_offset[a] = bmodel[a].eval(t_ref);
         out.acc_gain[a] = smodel[a].eval(t_ref);
-        if (opt.tmodel == TChoice::None) {
+        if (tm == TChoice::None) {
             out.acc_tbias[a] = TModel{};
             out.acc_tscale[a] = TModel{};
         } else {
@@ -592,10 +838,117 @@ std::string fit_station(const Station &st, const FitOptions &opt, CalResult &out
     // Run twice: linear only (for the report's middle stage) and with the nonlinearity terms
     // where a tilt sweep allows them (the record).
     const CalResult stage_flip = out;
-    CalResult stage_lin = out;
+    CalResult stage_lin = out, pair = out, nominal_for_report;
     e = fit_elements(st, acc, stage_lin, false);
     if (e.empty()) e = fit_elements(st, acc, out, true);
+    if (e.empty()) e = fit_elements(st, acc, pair, true, false);
     if (!e.empty()) return e;
+    nominal_for_report = out;
+    CalResult mag = out;
+    e = fit_magnitude(st, acc, mag);
+    if (!e.empty()) return e;
+    {
+        CalResult raw = out;
+        for (int i = 0; i < 3; i++) {
+            raw.acc_offset[i] = 0.0;
+            raw.acc_gain[i] = 1.0;
+            raw.acc_tbias[i] = TModel{};
+            raw.acc_tscale[i] = TModel{};
+            raw.acc_nonlin[i] = {0, 0, 0, 0};
+            for (int j = 0; j < 3; j++)
+                raw.acc_misalign[i][j] = (i == j);
+        }
+        out.res_raw = residuals(st, raw);
+        out.res_pair = residuals(st, pair);
+        out.res_nominal = residuals(st, out);
+        out.res_magnitude = residuals(st, mag);
+        // The placement check: on a precise positioner the nominal fit's residual against the
+        // nominal directions is about its residual against 1 g (noise, hysteresis and model
+        // residue show in both); rows placed off their nominal directions add to the first only.
+        // A second sign: the nominal fit misses 1 g by more than the per-axis pair method, whose
+        // offsets are not moved by placement to first order.
+        const bool placement = out.res_nominal.dir_rms_mg >
+                                   kPlacementRatio * out.res_nominal.mag_rms_mg +
+                                       kPlacementFloorMg ||
+                               out.res_nominal.mag_rms_mg >
+                                   kPlacementRatio * out.res_pair.mag_rms_mg + kPlacementFloorMg;
+        FitMethod method = opt.method;
+        if (method == FitMethod::Auto)
+            method = placement ? FitMethod::Magnitude : FitMethod::Nominal;
+        for (const Row *r : acc) {
+            RowResidual rr;
+            rr.line = r->line;
+            rr.block = r->block;
+            rr.temp_c = r->temp_c;
+            rr.u = r->u;
+            rr.raw_mg = row_mag_mg(raw, st, *r);
+            rr.pair_mg = row_mag_mg(pair, st, *r);
+            rr.nominal_mg = row_mag_mg(out, st, *r);
+            rr.magnitude_mg = row_mag_mg(mag, st, *r);
+            out.rows.push_back(rr);
+        }
+        const Residuals rn = out.res_nominal, rm = out.res_magnitude, rp = out.res_pair,
+                        r0 = out.res_raw;
+        const std::vector<RowResidual> rows = out.rows;
+        const std::vector<BlockMeas> blocks = out.blocks;
+        const auto soaks = out.soaks;
+        const TemperatureFits tfits = out.tfits;
+        if (method == FitMethod::Magnitude) out = mag;
+        if (method == FitMethod::Pair) out = pair;
+        out.method = method;
+        out.res_raw = r0;
+        out.res_pair = rp;
+        out.res_nominal = rn;
+        out.res_magnitude = rm;
+        out.rows = rows;
+        out.blocks = blocks;
+        out.soaks = soaks;
+        out.tfits = tfits;
+        out.one_temperature = stage_flip.one_temperature;
+        out.res_chosen = residuals(st, out);
+        for (auto &rr : out.rows) {
+            rr.chosen_mg = method == FitMethod::Magnitude ? rr.magnitude_mg
+                           : method == FitMethod::Pair    ? rr.pair_mg
+                                                          : rr.nominal_mg;
+        }
+        for (size_t k = 0; k < acc.size(); k++) {
+            const Row &r = *acc[k];
+            const std::array<double, 3> raw3 = {r.v[0] * st.acc_lsb_g, r.v[1] * st.acc_lsb_g,
+                                                r.v[2] * st.acc_lsb_g};
+            const auto o = apply_double(out, raw3, r.temp_c);
+            double dot = 0.0, on = 0.0, un = 0.0;
+            for (int i = 0; i < 3; i++) {
+                dot += o[i] * r.u[i];
+                on += o[i] * o[i];
+                un += r.u[i] * r.u[i];
+            }
+            out.rows[k].angle_deg = std::acos(std::clamp(dot / std::sqrt(on * un), -1.0, 1.0)) *
+                                    180.0 / 3.14159265358979323846;
+        }
+        const Residuals &rc = out.res_chosen;
+        if (placement) {
+            char w[480];
+            std::snprintf(
+                w, sizeof w,
+                "the nominal-direction fit's residual against the nominal directions (rms "
+                "%.3f mg) is %.1f times its residual against 1 g (rms %.3f mg): the rows "
+                "were not where the file says (placement against the %s fit: rms %.2f "
+                "deg, max %.2f deg; a hand-placed cube?). Judge the calibration by the "
+                "||a|-1g| column",
+                rn.dir_rms_mg, rn.dir_rms_mg / std::max(rn.mag_rms_mg, 1e-4), rn.mag_rms_mg,
+                fit_method_name(method), rc.ang_rms_deg, rc.ang_max_deg);
+            out.warnings.push_back(w);
+            if (method != FitMethod::Magnitude) {
+                std::snprintf(w, sizeof w,
+                              "the record uses the %s fit (--fit %s), which misses 1 g by rms %.3f "
+                              "mg where the magnitude fit reaches %.3f mg; --fit auto chooses the "
+                              "magnitude fit here",
+                              fit_method_name(method), fit_method_name(opt.method), rc.mag_rms_mg,
+                              rm.mag_rms_mg);
+                out.warnings.push_back(w);
+            }
+        }
+    }
 
     // ---- 4. gyro ----
     {
@@ -627,6 +980,7 @@ std::string fit_station(const Station &st, const FitOptions &opt, CalResult &out
                 }
                 if (den > 0.0) {
                     out.gyro_scale[a] = num / den;
+                    out.gyro_scale_fitted = true;
                     if (!(out.gyro_scale[a] > 0.0)) {
                         return "degenerate data: gyro axis " + std::string(kAxis[a]) +
                                ": the measured turn has the opposite sign of the known angle (axis or direction swapped)";
@@ -678,7 +1032,7 @@ std::string fit_station(const Station &st, const FitOptions &opt, CalResult &out
                   st.rows.size(), acc.size(), out.blocks.size(), out.soaks.size(),
                   out.blocks[out.soaks.front().front()].t, out.blocks[out.soaks.back().front()].t);
     rep += b;
-    if (opt.tmodel != TChoice::None) {
+    if (out.tmodel != TChoice::None) {
         rep +=
             "temperature compensation: residual spread per model ([TEMP-LORENTZ] definitions)\n"
             "  bias: Bmax-Bmin of soak-point means, mg [over every soak]\n"
@@ -712,16 +1066,46 @@ std::string fit_station(const Station &st, const FitOptions &opt, CalResult &out
                 rep += "\n";
             }
         }
-        rep += std::string("  chosen for the record: ") + tchoice_name(opt.tmodel) +
-               (opt.tmodel == TChoice::Best ? " (= lorentz+cubic)" : "") + "\n";
+        rep += std::string("  chosen for the record: ") + tchoice_name(out.tmodel) +
+               (out.tmodel == TChoice::Best ? " (= lorentz+cubic)" : "") + "\n";
     }
-    rep += static_report(st, stage_flip, stage_lin, out);
+    if (out.one_temperature && opt.tmodel_auto && opt.tmodel != TChoice::None &&
+        out.tmodel == TChoice::None)
+        rep +=
+            "temperature: one soak temperature only: no temperature model (as --tmodel none); the "
+            "record holds the offsets and gains of this temperature\n";
+    rep += static_report(st, stage_flip, stage_lin, nominal_for_report);
     if (!out.have_nonlin)
         rep += "nonlinearity: not fitted (needs a tilt sweep of >= 5 positions per axis)\n";
-    if (out.have_gyro) {
-        std::snprintf(b, sizeof b, "gyro: offset %.4f %.4f %.4f deg/s, scale %.6f %.6f %.6f\n",
+    rep += "fit of offsets, gains and cross-axis: residuals over every static row (position "
+           "means), mg\n"
+           "  method                      ||a|-1g| rms      max |  |a-u| rms      max | angle to u "
+           "rms  max deg\n";
+    auto line = [&](const char *name, const Residuals &r) {
+        std::snprintf(b, sizeof b, "  %-26s %9.4f %9.4f | %9.4f %9.4f | %9.3f %6.3f\n", name,
+                      r.mag_rms_mg, r.mag_max_mg, r.dir_rms_mg, r.dir_max_mg, r.ang_rms_deg,
+                      r.ang_max_deg);
+        rep += b;
+    };
+    line("none (nominal scale)", out.res_raw);
+    line("per-axis pair", out.res_pair);
+    line("nominal directions", out.res_nominal);
+    line("magnitude + rotation", out.res_magnitude);
+    std::snprintf(b, sizeof b, "  chosen for the record: %s (--fit %s)\n",
+                  fit_method_name(out.method), fit_method_name(opt.method));
+    rep += b;
+    rep += "  ||a|-1g| needs no placement; |a-u| and the angle also hold every error of where the "
+           "rows were placed\n";
+    for (const auto &w : out.warnings)
+        rep += "WARNING: " + w + "\n";
+    if (!out.have_gyro) {
+        rep += "gyro: not calibrated (no gyro_still or gyro_turn rows): the record holds offset 0 "
+               "and scale 1\n";
+    } else {
+        std::snprintf(b, sizeof b, "gyro: offset %.4f %.4f %.4f deg/s, scale %.6f %.6f %.6f%s\n",
                       out.gyro_offset[0], out.gyro_offset[1], out.gyro_offset[2], out.gyro_scale[0],
-                      out.gyro_scale[1], out.gyro_scale[2]);
+                      out.gyro_scale[1], out.gyro_scale[2],
+                      out.gyro_scale_fitted ? "" : " (scale not calibrated: no turns)");
         rep += b;
     }
     out.report = rep;

@@ -66,7 +66,7 @@ std::string to_calrec(const CalResult &c, const Station &st, struct calrec &r)
     r.binding.lot_id1 = st.binding[4];
     r.binding.lot_id2 = st.binding[5];
     if (calrec_check_binding(&r.binding) != INC_OK) {
-        return "binding out of range (calrec_check_binding): family 1..3, product 1..0xFFFF, ...";
+        return "binding out of range (calrec_check_binding): family 1..4 (4 generic), product 1..0xFFFF, ...";
     }
     for (int a = 0; a < 3; a++) {
         r.acc_offset[a] = q(c.acc_offset[a], kQ16);
@@ -147,6 +147,14 @@ std::string firmware_check(const Station &st, const struct calrec &rec, FwCheck 
         bool within30 = false;
         for (int i = 0; i < 3; i++)
             within30 |= std::fabs(row.u[i]) > 0.05 && std::fabs(row.u[i]) <= 0.51;
+        const double mag = std::sqrt(static_cast<double>(o[0]) * o[0] +
+                                     static_cast<double>(o[1]) * o[1] +
+                                     static_cast<double>(o[2]) * o[2]) /
+                           kQ16;
+        const double em = std::fabs(mag - 1.0) * 1e3;
+        out.row_mag_mg.push_back((mag - 1.0) * 1e3);
+        out.mag_max_mg = std::fmax(out.mag_max_mg, em);
+        out.mag_rms_mg += em * em;
         for (int i = 0; i < 3; i++) {
             out.max_lsb = std::fmax(out.max_lsb, std::fabs(o[i] - ref[i] * kQ16));
             const double err = std::fabs(o[i] / kQ16 - row.u[i]) * 1e3;
@@ -154,6 +162,55 @@ std::string firmware_check(const Station &st, const struct calrec &rec, FwCheck 
             if (within30) out.max_tilt_err_mg = std::fmax(out.max_tilt_err_mg, err);
         }
         out.rows++;
+    }
+    if (out.rows) out.mag_rms_mg = std::sqrt(out.mag_rms_mg / static_cast<double>(out.rows));
+    return "";
+}
+
+bool record_has_tmodel(const struct calrec &r)
+{
+    for (int a = 0; a < 3; a++) {
+        if (r.acc_tbias[a].kind != CALREC_TM_NONE || r.acc_tscale[a].kind != CALREC_TM_NONE)
+            return true;
+    }
+    return false;
+}
+
+std::string apply_firmware(const struct calrec &rec, const std::vector<std::array<double, 3>> &in_g,
+                           const std::vector<double> &temp_c, double t_default,
+                           std::vector<std::array<double, 3>> &out_g, size_t &range)
+{
+    out_g.assign(in_g.size(), {0.0, 0.0, 0.0});
+    range = 0;
+    struct calrec r = rec;
+    r.valid = true;
+    struct cal_acc acc;
+    fx_q16_t t = q(temp_c.empty() ? t_default : temp_c[0], kQ16);
+    int e = cal_acc_init(&acc, &r, t);
+    if (e != INC_OK)
+        return std::string("firmware: cal_acc_init refused the record (") + inc_err_name(e) + ")";
+    for (size_t k = 0; k < in_g.size(); k++) {
+        if (!temp_c.empty()) {
+            const fx_q16_t tk = q(temp_c[k], kQ16);
+            if (tk != t) {
+                t = tk;
+                e = cal_acc_set_temp(&acc, t);
+                if (e != INC_OK)
+                    return "firmware: cal_acc_set_temp refused sample " + std::to_string(k + 1) +
+                           " at " + std::to_string(temp_c[k]) + " degC (" + inc_err_name(e) + ")";
+            }
+        }
+        fx_q16_t in[3], o[3];
+        for (int i = 0; i < 3; i++)
+            in[i] = q(in_g[k][i], kQ16);
+        e = cal_acc_apply(&acc, in, o);
+        if (e == INC_ERR_RANGE) {
+            range++;
+        } else if (e != INC_OK) {
+            return std::string("firmware: cal_acc_apply failed (") + inc_err_name(e) + ")";
+        }
+        for (int i = 0; i < 3; i++)
+            out_g[k][i] = o[i] / kQ16;
     }
     return "";
 }

@@ -9,6 +9,7 @@
 #include "inclino/sim/inertial.h"
 
 #include <cmath>
+#include <cstdio>
 
 namespace calstation
 {
@@ -31,7 +32,8 @@ class Sim
             sim_calpart_seeded(&prm, cfg.part.curve_seed);
         }
         sim_calpart_init(&part_, &prm, cfg.noise_seed);
-        sim_rng_seed(&trng_, cfg.noise_seed ^ 0x54454D50ull); // "TEMP"
+        sim_rng_seed(&trng_, cfg.noise_seed ^ 0x54454D50ull);     // "TEMP"
+        sim_rng_seed(&prng_, cfg.placement_seed ^ 0x504C4143ull); // "PLAC"
         st_.acc_lsb_g = kSimAccLsbG;
         st_.gyro_lsb_dps = kSimGyroLsbDps;
         st_.t_ref_c = 25.0;
@@ -56,6 +58,7 @@ class Sim
             chamber(-20.0, 60.0);
             break;
         case Schedule::Validation: chamber(-15.0, 55.0); break;
+        case Schedule::Hand: six_faces(next_block_++); break;
         }
         return st_;
     }
@@ -101,18 +104,94 @@ class Sim
         }
     }
 
+    // The direction the part really feels for nominal direction n (see SimConfig).
+    void placed(const double n[3], double u[3])
+    {
+        for (int i = 0; i < 3; i++)
+            u[i] = n[i];
+        if (cfg_.nonortho_deg != 0.0) {
+            const double d = cfg_.nonortho_deg * kPi / 180.0;
+            // The cube's face normals in the sensor frame: x exact, y leans toward x, z toward x
+            // and away from y; u = the normal of the face pointing up, by its components.
+            const double ex[3] = {1.0, 0.0, 0.0};
+            const double ey[3] = {std::sin(d), std::cos(d), 0.0};
+            const double ez[3] = {
+                std::sin(d), -std::sin(d / 2.0),
+                std::sqrt(1.0 - std::sin(d) * std::sin(d) - std::sin(d / 2.0) * std::sin(d / 2.0))};
+            for (int i = 0; i < 3; i++)
+                u[i] = n[0] * ex[i] + n[1] * ey[i] + n[2] * ez[i];
+            const double m = std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+            for (int i = 0; i < 3; i++)
+                u[i] /= m;
+        }
+        if (cfg_.placement_deg > 0.0) {
+            // A random unit vector p perpendicular to u; tilt u toward p by theta.
+            double p[3];
+            const double r[3] = {sim_rng_gauss(&prng_), sim_rng_gauss(&prng_),
+                                 sim_rng_gauss(&prng_)};
+            const double th = cfg_.placement_deg * (0.5 + 0.5 * sim_rng_uniform(&prng_)) * kPi /
+                              180.0;
+            const double d = r[0] * u[0] + r[1] * u[1] + r[2] * u[2];
+            for (int i = 0; i < 3; i++)
+                p[i] = r[i] - d * u[i];
+            const double m = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+            for (int i = 0; i < 3; i++)
+                u[i] = std::cos(th) * u[i] + std::sin(th) * p[i] / m;
+        }
+    }
+
+    // The part carried by hand from direction a to b: 2 s along the normalised straight path
+    // with 0.2 g of shaking (not still, so a sample CSV has clear moves between faces).
+    void carry(const double a[3], const double b[3])
+    {
+        const int n = static_cast<int>(2.0 * cfg_.rate_sps);
+        const double still[3] = {0.0, 0.0, 0.0};
+        sim_inertial_input out;
+        for (int k = 0; k < n; k++) {
+            const double f = (k + 1.0) / (n + 1.0);
+            double u[3], m = 0.0;
+            for (int i = 0; i < 3; i++) {
+                u[i] = (1.0 - f) * a[i] + f * b[i] + 0.2 * sim_rng_gauss(&prng_);
+                m += u[i] * u[i];
+            }
+            m = std::sqrt(m);
+            for (int i = 0; i < 3; i++)
+                u[i] = m > 1e-6 ? u[i] / m : 0.0;
+            sample(u, still, out);
+            std::array<double, 3> g{};
+            for (int i = 0; i < 3; i++)
+                g[i] = sim_quantise(out.accel_g[i], kSimAccLsbG, 14, nullptr) * kSimAccLsbG;
+            st_.samples.push_back(g);
+            st_.sample_temp_c.push_back(temp_reading());
+        }
+    }
+
     void acc_row(long block, double ux, double uy, double uz)
     {
-        const double u[3] = {ux, uy, uz}, still[3] = {0.0, 0.0, 0.0};
+        const double nom[3] = {ux, uy, uz}, still[3] = {0.0, 0.0, 0.0};
+        double u[3];
+        placed(nom, u);
         double sum[3] = {0.0, 0.0, 0.0}, tsum = 0.0;
         sim_inertial_input out;
+        if (cfg_.keep_samples && have_last_) carry(last_, u);
         for (int k = 0; k < cfg_.samples; k++) {
             sample(u, still, out);
+            std::array<double, 3> g{};
             for (int i = 0; i < 3; i++) {
-                sum[i] += sim_quantise(out.accel_g[i], kSimAccLsbG, 14, nullptr);
+                const int32_t c = sim_quantise(out.accel_g[i], kSimAccLsbG, 14, nullptr);
+                sum[i] += c;
+                g[i] = c * kSimAccLsbG;
             }
-            tsum += temp_reading();
+            const double tr = temp_reading();
+            tsum += tr;
+            if (cfg_.keep_samples) {
+                st_.samples.push_back(g);
+                st_.sample_temp_c.push_back(tr);
+            }
         }
+        for (int i = 0; i < 3; i++)
+            last_[i] = u[i];
+        have_last_ = true;
         Row r;
         r.block = block;
         r.kind = RowKind::Acc;
@@ -225,6 +304,9 @@ class Sim
     SimConfig cfg_;
     sim_calpart part_{};
     sim_rng trng_{};
+    sim_rng prng_{};
+    double last_[3] = {0.0, 0.0, 0.0};
+    bool have_last_ = false;
     Station st_;
     double air_ = 25.0, die_ = 25.0;
     long next_block_ = 0;
@@ -235,7 +317,29 @@ class Sim
 Station simulate_station(const SimConfig &cfg)
 {
     Sim s(cfg);
-    return s.run();
+    Station st = s.run();
+    if (cfg.keep_samples) st.sample_rate_sps = cfg.rate_sps;
+    return st;
+}
+
+std::string format_samples(const Station &st, double unit_per_g, bool with_temp)
+{
+    std::string o = "# Inclino simulated IMU samples (calstation simulate --format samples)\n";
+    o += with_temp ? "t,ax,ay,az,temp_c\n" : "t,ax,ay,az\n";
+    char b[160];
+    const double dt = st.sample_rate_sps > 0.0 ? 1.0 / st.sample_rate_sps : 0.0;
+    for (size_t k = 0; k < st.samples.size(); k++) {
+        const auto &g = st.samples[k];
+        const int n = std::snprintf(b, sizeof b, "%.6f,%.7g,%.7g,%.7g", k * dt, g[0] * unit_per_g,
+                                    g[1] * unit_per_g, g[2] * unit_per_g);
+        o.append(b, static_cast<size_t>(n));
+        if (with_temp) {
+            std::snprintf(b, sizeof b, ",%.3f", st.sample_temp_c[k]);
+            o += b;
+        }
+        o += "\n";
+    }
+    return o;
 }
 
 } // namespace calstation

@@ -88,6 +88,8 @@ enum calrec_family {
     CALREC_FAMILY_SCA3000 = 1,   /* Murata/VTI SCA3000 accelerometer */
     CALREC_FAMILY_ADIS1625X = 2, /* ADI ADIS16250/16255 (and 16260/16265) single-axis gyro */
     CALREC_FAMILY_ADIS163XX = 3, /* ADI ADIS1636x / ADIS1640x six-axis IMU */
+    CALREC_FAMILY_GENERIC = 4,   /* an IMU no firmware driver reads: host use (calstation apply);
+                                    no driver reports this family, so no part ever loads it */
 };
 
 /* SCA3000 variant codes for binding.product (the part has no product-id register). */
@@ -109,6 +111,7 @@ enum calrec_family {
  *   ADIS163XX    PROD_ID (reg 0x56), e.g. 16364,      0              SERIAL_NUM    LOT_ID1/2
  *                16405                                               (1636x, 0x58) (1636x) else 0
  *                                                                    else 0
+ *   GENERIC      any 1..0xFFFF the user chooses         0..0xFF        0..0xFFFF     0..0xFFFF
  * Ranges (calrec_check_binding): family one of enum calrec_family; product 1..0xFFFF; revision
  * 0..0xFF and 0 for the ADIS families; serial and lot ids 0..0xFFFF and 0 for the SCA3000.
  * Parts without a serial number (SCA3000, ADIS16250/55, ADIS1640x) cannot be told apart from

@@ -37,8 +37,52 @@ enum class TChoice { Best, None, Linear, Parabola, Lorentz, Pwl, LorentzCubic };
 bool parse_tchoice(const std::string &s, TChoice &c);
 const char *tchoice_name(TChoice c);
 
+// How the offsets, gains and cross-axis matrix are fitted (step 3; docs/calibration.md 4.3):
+//   Nominal    least squares against the nominal directions u of the rows (offset c0, the
+//              sensed directions P, M = P^-1): exact on a precise positioner, but every face
+//              placed off its nominal direction moves the offsets (a hand-placed cube);
+//   Pair       the per-axis pair method: each axis's offset from its own +-1 g face pair only,
+//              then P by least squares against the nominal directions with that offset fixed;
+//   Magnitude  |S n(v)| = 1 g over every static row (offsets, the symmetric part S of the
+//              matrix and the nonlinearity), which assumes nothing about where the rows were
+//              placed; then the rotation R (M = R S) from the nominal directions (orthogonal
+//              Procrustes), the only part of M the magnitudes cannot see;
+//   Auto       the placement check: Magnitude when the nominal fit's residual against the
+//              nominal directions is more than 2 x its residual against 1 g + 0.05 mg, or its
+//              residual against 1 g more than 2 x the pair method's + 0.05 mg (rms over the
+//              rows); else Nominal (a precise positioner: its result is kept).
+//   The magnitude fit adjusts the offsets and the diagonal of S only: the off-diagonal terms
+//   enter |S n| through n_i n_j, which vanishes to first order on faces and single-axis tilt
+//   sweeps, so they stay the nominal fit's, as does the nonlinearity.
+enum class FitMethod { Auto, Nominal, Pair, Magnitude };
+bool parse_fit_method(const std::string &s, FitMethod &m);
+const char *fit_method_name(FitMethod m);
+
 struct FitOptions {
     TChoice tmodel = TChoice::Best;
+    // true: the model was not chosen by the user; one soak temperature then means TChoice::None
+    // (said in the report) instead of a refusal.
+    bool tmodel_auto = false;
+    FitMethod method = FitMethod::Auto;
+};
+
+// Residuals of a correction over the static acc rows (each row is a position mean), mg / deg.
+struct Residuals {
+    size_t rows = 0;
+    double mag_rms_mg = 0.0, mag_max_mg = 0.0;   // | |a| - 1 g |: needs no placement
+    double dir_rms_mg = 0.0, dir_max_mg = 0.0;   // | a - u |: against the nominal directions
+    double ang_rms_deg = 0.0, ang_max_deg = 0.0; // angle between a and u
+};
+
+// One static row's residual | |a| - 1 g | (mg) before and after the chosen correction, for the
+// per-face plot (calstation fit --faces-csv).
+struct RowResidual {
+    int line = 0;
+    long block = 0;
+    double temp_c = 0.0;
+    std::array<double, 3> u{};
+    double raw_mg = 0.0, pair_mg = 0.0, nominal_mg = 0.0, magnitude_mg = 0.0, chosen_mg = 0.0;
+    double angle_deg = 0.0; // chosen correction against u
 };
 
 // One block's flip-pair measurement (step 1).
@@ -80,8 +124,14 @@ struct CalResult {
     bool have_gyro = false;
     bool have_nonlin = false;
     TChoice tmodel = TChoice::None;
+    FitMethod method = FitMethod::Nominal; // the one the coefficients come from
+    bool gyro_scale_fitted = false;        // turns present (else the gyro scale is 1)
 
     // For the reports.
+    Residuals res_raw, res_pair, res_nominal, res_magnitude, res_chosen;
+    std::vector<RowResidual> rows;
+    std::vector<std::string> warnings; // also in the report
+    bool one_temperature = false;      // the soaks span one temperature only
     std::vector<BlockMeas> blocks;
     std::vector<std::vector<size_t>> soaks; // indices into blocks, by temperature
     TemperatureFits tfits;
@@ -112,6 +162,9 @@ std::string fit_station(const Station &st, const FitOptions &opt, CalResult &out
 // Corrected acceleration for one raw reading (counts * lsb = r, g) at temperature t with the
 // result's coefficients in double precision (the reference the firmware is compared with).
 std::array<double, 3> apply_double(const CalResult &c, const std::array<double, 3> &r, double t);
+
+// Residuals of correction c over the acc rows of st (double precision).
+Residuals residuals(const Station &st, const CalResult &c);
 
 } // namespace calstation
 

@@ -33,7 +33,21 @@ struct FwCheck {
     double max_lsb = 0.0;         // max |firmware - double model of the quantised record|, Q16 LSB
     double max_err_mg = 0.0;      // max |firmware - true specific force| over the rows, mg
     double max_tilt_err_mg = 0.0; // the same over the rows within +-30 deg (|u| <= 0.5 g on x, y)
+    double mag_rms_mg = 0.0;      // rms over the rows of ||firmware output| - 1 g|
+    double mag_max_mg = 0.0;
+    std::vector<double> row_mag_mg; // |firmware output| - 1 g per acc row, in file order
 };
+
+// The firmware's fixed-point correction (cal_acc_init / cal_acc_set_temp / cal_acc_apply) on
+// any samples: in_g in g (rounded to Q16), temperature per sample (temp_c, or t_default for
+// every sample when temp_c is empty; cal_acc_set_temp runs when it changes), out_g in g (the
+// Q16 output). range counts the samples cal_acc_apply flagged INC_ERR_RANGE (beyond +-64 g).
+std::string apply_firmware(const struct calrec &r, const std::vector<std::array<double, 3>> &in_g,
+                           const std::vector<double> &temp_c, double t_default,
+                           std::vector<std::array<double, 3>> &out_g, size_t &range);
+
+// Whether any accelerometer temperature model of the record is not NONE.
+bool record_has_tmodel(const struct calrec &r);
 
 // Run cal_acc_init/set_temp/apply on every acc row (reading = counts * lsb in Q16).
 std::string firmware_check(const Station &st, const struct calrec &r, FwCheck &out);

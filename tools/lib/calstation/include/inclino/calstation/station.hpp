@@ -45,6 +45,10 @@ struct Row {
 };
 
 struct Station {
+    // Simulated samples (SimConfig::keep_samples): acceleration g and temperature reading degC.
+    std::vector<std::array<double, 3>> samples;
+    std::vector<double> sample_temp_c;
+    double sample_rate_sps = 0.0;
     double acc_lsb_g = 0.0;
     double gyro_lsb_dps = 0.0;
     double t_ref_c = 25.0;
@@ -75,6 +79,7 @@ enum class Schedule {
     Calibration, // ambient block (six faces, tilt sweeps, gyro), then -20..60 degC every 10 degC
     Validation,  // six faces at -15..55 degC every 10 degC, for held-out checks
     Ambient,     // the ambient block only (no chamber)
+    Hand,        // six faces of a hand-placed cube at ambient (no tilts, no gyro, no chamber)
 };
 
 struct SimConfig {
@@ -88,6 +93,19 @@ struct SimConfig {
     double die_tau_s = 600.0;   // die temperature lag behind the chamber air
     double temp_noise_c = 0.05; // on-board temperature sensor noise, rms
     uint64_t noise_seed = 1;
+    // Placement of the acc positions. The station file always records the nominal direction u;
+    // the part feels u turned by up to placement_deg (each position its own random tilt of
+    // 0.5..1 x placement_deg in a random direction, from placement_seed) and, on a cube whose
+    // faces are not orthogonal, the fixed face-normal errors of nonortho_deg (the +y face
+    // leans nonortho_deg toward +x, the +z face nonortho_deg toward +x and -nonortho_deg/2
+    // toward +y; opposite faces parallel). 0, 0: a precise positioner.
+    double placement_deg = 0.0;
+    uint64_t placement_seed = 1;
+    double nonortho_deg = 0.0;
+    // Keep every accelerometer sample (g, as quantised) of the acc rows, with the moves between
+    // positions (2 s each, the part carried by hand: a path between the two directions plus
+    // 0.2 g of shaking), for a sample CSV (format_samples).
+    bool keep_samples = false;
     bool have_binding = false; // override the simulated part's identity (default: an ADIS16364)
     std::array<uint32_t, 6> binding{};
 };
@@ -98,6 +116,10 @@ constexpr double kSimGyroLsbDps = 0.05; // 0.05 deg/s/LSB, 14-bit
 constexpr double kSimTempLsbC = 0.136;  // 0.136 degC/LSB, 0 LSB = 25 degC
 
 Station simulate_station(const SimConfig &cfg);
+
+// The kept samples as a sample CSV (samples.hpp): t,ax,ay,az[,temp_c], acceleration in units of
+// unit_per_g per g (1: g; 9.80665: m/s^2).
+std::string format_samples(const Station &st, double unit_per_g, bool with_temp);
 
 } // namespace calstation
 
