@@ -140,6 +140,7 @@ void epb_image_run(const struct hal *hal)
     b.cs = EPB_PIN_CS;
     b.dr = EPB_PIN_DR;
     b.per_result = NULL;
+    b.store = NULL;
     if (spi_bitbang_init(&spi, &c) != INC_OK) {
         for (;;) {
         }
@@ -161,7 +162,8 @@ void epb_image_run_on(const struct epb_image_board *board)
     (void)app_cfg_default(&cfg, adis_imu_sample_rate_msps(ADIS_IMU_SMPL_PRD_DEFAULT));
     for (;;) {
         unsigned i;
-        if (sensor_up(board) != INC_OK || calstore_init(&store, &fc) != INC_OK ||
+        if (sensor_up(board) != INC_OK ||
+            calstore_init(&store, board->store != NULL ? board->store : &fc) != INC_OK ||
             app_init(&app, &cfg, &sensor, &store) != INC_OK) {
             hal_delay_ms(hal, EPB_RETRY_MS);
             continue;

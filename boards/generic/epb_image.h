@@ -6,18 +6,22 @@
 #ifndef INCLINO_EPB_IMAGE_H
 #define INCLINO_EPB_IMAGE_H
 
+#include "inclino/calstore.h"
 #include "inclino/hal.h"
 #include "inclino/spi.h"
 
 /* What a board gives the EPB application: its HAL, the SPI bus the ADIS part is on (any engine),
- * the part's chip select and data-ready pins, and a hook called once per result (NULL: none;
- * the S32K1 boards refresh their watchdog there). */
+ * the part's chip select and data-ready pins, a hook called once per result (NULL: none;
+ * the S32K1 boards refresh their watchdog there), and the calibration store's flash (NULL: the
+ * placeholder whose every access fails, so the application runs uncalibrated and says so; the
+ * S32K1 boards give the FTFC data flash). */
 struct epb_image_board {
     const struct hal *hal;
     const struct spi_bus *spi;
     hal_pin_t cs;
     hal_pin_t dr;
     void (*per_result)(void);
+    const struct calstore_config *store;
 };
 
 /* Run the EPB application on a board; never returns. */

@@ -90,17 +90,12 @@ static int lpspi_up(struct s32k_board *b)
     return err;
 }
 
-int s32k_board_init(struct s32k_board *b, const struct s32k_board_desc *desc,
-                    enum s32k_board_spi spi, bool watchdog)
+int s32k_board_init_core(struct s32k_board *b, const struct s32k_board_desc *desc, bool watchdog)
 {
     struct s32k_hal_config hc;
-    struct spi_bitbang_cfg sc;
     int err;
     if (b == NULL || desc == NULL) {
         return INC_ERR_NULL;
-    }
-    if (spi != S32K_BOARD_SPI_BITBANG && spi != S32K_BOARD_SPI_LPSPI) {
-        return INC_ERR_INVAL;
     }
     b->desc = desc;
     b->spi = NULL;
@@ -114,17 +109,23 @@ int s32k_board_init(struct s32k_board *b, const struct s32k_board_desc *desc,
     hc.part = desc->part;
     hc.core_hz = b->core_hz;
     hc.watchdog = watchdog;
-    err = s32k_hal_init(&b->port, &hc, &b->hal);
-    if (err != INC_OK) {
-        return err;
+    return s32k_hal_init(&b->port, &hc, &b->hal);
+}
+
+int s32k_board_spi_bitbang(struct s32k_board *b)
+{
+    struct spi_bitbang_cfg sc;
+    int err;
+    if (b == NULL) {
+        return INC_ERR_NULL;
     }
-    if (spi == S32K_BOARD_SPI_LPSPI) {
-        return lpspi_up(b);
+    if (b->desc == NULL || b->spi != NULL) {
+        return INC_ERR_STATE;
     }
     sc.hal = &b->hal;
-    sc.sclk = desc->pins.sclk;
-    sc.mosi = desc->pins.mosi;
-    sc.miso = desc->pins.miso;
+    sc.sclk = b->desc->pins.sclk;
+    sc.mosi = b->desc->pins.mosi;
+    sc.miso = b->desc->pins.miso;
     err = spi_bitbang_init(&b->bb, &sc);
     if (err == INC_OK) {
         b->fast.frame = s32k_board_bb_frame;
@@ -133,6 +134,34 @@ int s32k_board_init(struct s32k_board *b, const struct s32k_board_desc *desc,
         b->spi = &b->bb.bus;
     }
     return err;
+}
+
+int s32k_board_spi_lpspi(struct s32k_board *b)
+{
+    if (b == NULL) {
+        return INC_ERR_NULL;
+    }
+    if (b->desc == NULL || b->spi != NULL) {
+        return INC_ERR_STATE;
+    }
+    return lpspi_up(b);
+}
+
+int s32k_board_init(struct s32k_board *b, const struct s32k_board_desc *desc,
+                    enum s32k_board_spi spi, bool watchdog)
+{
+    int err;
+    if (b == NULL || desc == NULL) {
+        return INC_ERR_NULL;
+    }
+    if (spi != S32K_BOARD_SPI_BITBANG && spi != S32K_BOARD_SPI_LPSPI) {
+        return INC_ERR_INVAL;
+    }
+    err = s32k_board_init_core(b, desc, watchdog);
+    if (err != INC_OK) {
+        return err;
+    }
+    return spi == S32K_BOARD_SPI_LPSPI ? s32k_board_spi_lpspi(b) : s32k_board_spi_bitbang(b);
 }
 
 uint16_t s32k_board_bb_frame(void *ctx, const struct spi_bitbang_frame *fr, bool *mosi_out)

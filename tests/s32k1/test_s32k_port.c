@@ -110,6 +110,16 @@ static void test_pins(void)
     }
     CHECK_EQ_INT(s32k_board_init(&board, &s32k_board_s32k144evb, (enum s32k_board_spi)7, true),
                  INC_ERR_INVAL);
+    /* The two-step bring-up of the board images: one engine, only after the core. */
+    CHECK_EQ_INT(s32k_board_init_core(NULL, &s32k_board_s32k144evb, true), INC_ERR_NULL);
+    CHECK_EQ_INT(s32k_board_spi_bitbang(NULL), INC_ERR_NULL);
+    CHECK_EQ_INT(s32k_board_spi_lpspi(NULL), INC_ERR_NULL);
+    CHECK_OK(s32k_board_init_core(&board, &s32k_board_s32k144evb, true));
+    CHECK(board.spi == NULL);
+    CHECK_OK(s32k_board_spi_bitbang(&board));
+    CHECK(board.spi == &board.bb.bus);
+    CHECK_EQ_INT(s32k_board_spi_bitbang(&board), INC_ERR_STATE);
+    CHECK_EQ_INT(s32k_board_spi_lpspi(&board), INC_ERR_STATE);
     CHECK_EQ_INT((int)s32k_bus_stats()->unmapped_reads, 0);
     CHECK_EQ_INT((int)s32k_bus_stats()->unmapped_writes, 0);
 }

@@ -85,6 +85,17 @@ struct s32k_board {
 int s32k_board_init(struct s32k_board *b, const struct s32k_board_desc *desc,
                     enum s32k_board_spi spi, bool watchdog);
 
+/*
+ * The same in two steps, so an image links only the engine it uses (the LPSPI driver is about
+ * 2 KB of an M0+ image): s32k_board_init_core (clocks, pins, the HAL port; b->spi = NULL), then
+ * exactly one of s32k_board_spi_bitbang / s32k_board_spi_lpspi. s32k_board_init is
+ * init_core + the engine `spi` names. Each returns 0, INC_ERR_NULL, INC_ERR_STATE (the engine
+ * before init_core, or a second engine) or the first error of the parts.
+ */
+int s32k_board_init_core(struct s32k_board *b, const struct s32k_board_desc *desc, bool watchdog);
+int s32k_board_spi_bitbang(struct s32k_board *b);
+int s32k_board_spi_lpspi(struct s32k_board *b);
+
 /* The bit-banged engine's fast path on this board (struct spi_bitbang_fast; ctx = the board):
  * PSOR/PCOR/PDIR and the port's inlined short delays, no call per bit. */
 uint16_t s32k_board_bb_frame(void *ctx, const struct spi_bitbang_frame *fr, bool *mosi_out);

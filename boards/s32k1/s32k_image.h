@@ -1,0 +1,33 @@
+/*
+ * s32k_image.h - what the S32K1 board images share (s32k_image.c): the board object, the
+ * bring-up, the calibration store on the FTFC data flash, and the EPB image's main loop. Each
+ * board folder keeps only what differs: its descriptor and its interrupt vectors (the S32K144
+ * has one PORT vector per port, the S32K116 one for all five), which call the bring-up's ISRs
+ * on s32k_image_board.
+ */
+#ifndef INCLINO_S32K_IMAGE_H
+#define INCLINO_S32K_IMAGE_H
+
+#include "inclino/calstore.h"
+#include "inclino/s32k_board.h"
+
+/* The board the image runs on (its ISRs take it). */
+extern struct s32k_board s32k_image_board;
+
+/* Clocks, pins, the HAL port (watchdog refreshed) and the bit-banged engine on s32k_image_board
+ * (the LPSPI driver is not linked). When it fails it never returns: it stops refreshing, so the
+ * watchdog resets the part and the bring-up is tried again. */
+void s32k_image_bringup(const struct s32k_board_desc *desc);
+
+/* The calibration store on sectors 0 and 1 of the FTFC data flash, or NULL when the part's
+ * FlexNVM gives no usable D-flash (never partitioned: docs/boards.md, "Data flash"). */
+const struct calstore_config *s32k_image_store(const struct s32k_board_desc *desc);
+
+/*
+ * The EPB image: s32k_image_bringup, the store of s32k_image_store (NULL: the placeholder flash,
+ * so the application runs uncalibrated and says so in its flags), and the EPB application
+ * (boards/generic/epb_image.c) with the watchdog refreshed once per result. Never returns.
+ */
+void s32k_epb_main(const struct s32k_board_desc *desc);
+
+#endif /* INCLINO_S32K_IMAGE_H */

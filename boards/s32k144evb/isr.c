@@ -1,0 +1,43 @@
+/*
+ * isr.c - the S32K144's interrupt vectors the S32K1 port uses, shared by this board's images:
+ * one PORT vector per port (PORTA..PORTE) and LPIT0 channel 1 (the time base), each calling the
+ * bring-up's ISR on s32k_image_board (boards/s32k1/s32k_image.h).
+ */
+#include "s32k_image.h"
+
+void PORTA_IRQHandler(void);
+void PORTB_IRQHandler(void);
+void PORTC_IRQHandler(void);
+void PORTD_IRQHandler(void);
+void PORTE_IRQHandler(void);
+void LPIT0_Ch1_IRQHandler(void);
+
+void PORTA_IRQHandler(void)
+{
+    s32k_board_port_isr(&s32k_image_board, 0u);
+}
+
+void PORTB_IRQHandler(void)
+{
+    s32k_board_port_isr(&s32k_image_board, 1u);
+}
+
+void PORTC_IRQHandler(void)
+{
+    s32k_board_port_isr(&s32k_image_board, 2u);
+}
+
+void PORTD_IRQHandler(void)
+{
+    s32k_board_port_isr(&s32k_image_board, 3u);
+}
+
+void PORTE_IRQHandler(void)
+{
+    s32k_board_port_isr(&s32k_image_board, 4u);
+}
+
+void LPIT0_Ch1_IRQHandler(void)
+{
+    s32k_board_lpit_isr(&s32k_image_board);
+}
