@@ -65,6 +65,15 @@ static int flash_none_erase(void *ctx, uint32_t addr)
 static const struct calstore_flash_ops epb_flash_none = {flash_none_read, flash_none_program,
                                                          flash_none_erase};
 
+const struct calstore_config *epb_image_no_flash(void)
+{
+    static const struct calstore_config fc = {&epb_flash_none, NULL,
+                                              EPB_FLASH_PAGE,  EPB_FLASH_PROG,
+                                              CALSTORE_ERASED, {EPB_FLASH_SLOT0, EPB_FLASH_SLOT1},
+                                              EPB_FLASH_PAGE};
+    return &fc;
+}
+
 /* Diagnostic requests (end of line). */
 enum epb_diag_cmd {
     EPB_DIAG_NONE = 0,
@@ -151,10 +160,6 @@ void epb_image_run(const struct hal *hal)
 void epb_image_run_on(const struct epb_image_board *board)
 {
     const struct hal *hal = board->hal;
-    static const struct calstore_config fc = {&epb_flash_none, NULL,
-                                              EPB_FLASH_PAGE,  EPB_FLASH_PROG,
-                                              CALSTORE_ERASED, {EPB_FLASH_SLOT0, EPB_FLASH_SLOT1},
-                                              EPB_FLASH_PAGE};
     /* Static, not on the stack: the M0+ image has 1 KiB of stack (docs/build.md). */
     static struct app_cfg cfg;
     static struct app_result r;
@@ -163,7 +168,8 @@ void epb_image_run_on(const struct epb_image_board *board)
     for (;;) {
         unsigned i;
         if (sensor_up(board) != INC_OK ||
-            calstore_init(&store, board->store != NULL ? board->store : &fc) != INC_OK ||
+            calstore_init(&store, board->store != NULL ? board->store : epb_image_no_flash()) !=
+                INC_OK ||
             app_init(&app, &cfg, &sensor, &store) != INC_OK) {
             hal_delay_ms(hal, EPB_RETRY_MS);
             continue;

@@ -24,6 +24,10 @@ struct epb_image_board {
     const struct calstore_config *store;
 };
 
+/* The placeholder flash of the calibration store: two 1 KiB slots whose every access fails with
+ * INC_ERR_IO (the application runs uncalibrated and flags it). */
+const struct calstore_config *epb_image_no_flash(void);
+
 /* Run the EPB application on a board; never returns. */
 void epb_image_run_on(const struct epb_image_board *board);
 

@@ -19,13 +19,14 @@ extern struct s32k_board s32k_image_board;
  * watchdog resets the part and the bring-up is tried again. */
 void s32k_image_bringup(const struct s32k_board_desc *desc);
 
-/* The calibration store on sectors 0 and 1 of the FTFC data flash, or NULL when the part's
- * FlexNVM gives no usable D-flash (never partitioned: docs/boards.md, "Data flash"). */
+/* The calibration store on sectors 0 and 1 of the FTFC data flash; when the part's FlexNVM
+ * gives no usable D-flash (never partitioned: docs/boards.md, "Data flash"), the placeholder
+ * flash whose every access fails (epb_image_no_flash), so the application runs uncalibrated and
+ * says so. Never NULL. */
 const struct calstore_config *s32k_image_store(const struct s32k_board_desc *desc);
 
 /*
- * The EPB image: s32k_image_bringup, the store of s32k_image_store (NULL: the placeholder flash,
- * so the application runs uncalibrated and says so in its flags), and the EPB application
+ * The EPB image: s32k_image_bringup, the store of s32k_image_store, and the EPB application
  * (boards/generic/epb_image.c) with the watchdog refreshed once per result. Never returns.
  */
 void s32k_epb_main(const struct s32k_board_desc *desc);

@@ -62,6 +62,7 @@
 
 /* ---- PCC: Peripheral Clock Controller (one 32-bit register per peripheral) ------------------ */
 #define S32K_PCC_BASE 0x40065000u
+#define S32K_PCC_FLEXCAN0 (S32K_PCC_BASE + 0x090u) /* PCC index 36 */
 #define S32K_PCC_LPSPI0 (S32K_PCC_BASE + 0x0B0u)
 #define S32K_PCC_LPSPI1 (S32K_PCC_BASE + 0x0B4u)
 #define S32K_PCC_LPIT (S32K_PCC_BASE + 0x0DCu)
