@@ -108,8 +108,8 @@ function(inclino_link_qemu_board exe)
 endfunction()
 
 function(inclino_add_image)
-  cmake_parse_arguments(I "LINK_CHECK;NO_RT_STARTUP" "NAME;SECTIONS" "SOURCES;LIBS;WHOLE_LIBS;MEMORY"
-    ${ARGN})
+  cmake_parse_arguments(I "LINK_CHECK;NO_RT_STARTUP" "NAME;SECTIONS;INDIRECT"
+    "SOURCES;LIBS;WHOLE_LIBS;MEMORY" ${ARGN})
   if(NOT I_NAME)
     message(FATAL_ERROR "inclino_add_image: NAME is required")
   endif()
@@ -181,12 +181,27 @@ INCLUDE @SECTIONS@
   _inclino_cross_postlink(${img} PRINT)
 
   set(dir $<TARGET_FILE_DIR:${img}>)
+  set(indirect_args "")
+  if(I_INDIRECT)
+    set(indirect_args --indirect ${I_INDIRECT})
+    set_property(TARGET ${img} APPEND PROPERTY LINK_DEPENDS ${I_INDIRECT})
+  endif()
   add_custom_command(TARGET ${img} POST_BUILD
     COMMAND ${Python3_EXECUTABLE} ${INCLINO_SCRIPTS_DIR}/stack_report.py
       --map ${dir}/${img}.map --elf $<TARGET_FILE:${img}> --nm ${INCLINO_NM}
-      --target ${INCLINO_TARGET} --out ${dir}/${img}.stack.txt --print
+      --target ${INCLINO_TARGET} --out ${dir}/${img}.stack.txt --print ${indirect_args}
     WORKING_DIRECTORY ${dir}
     VERBATIM)
+  if(I_INDIRECT)
+    # The worst case with the calls through function pointers must fit the reserved stack.
+    add_test(NAME image_stack_${img}
+      COMMAND ${Python3_EXECUTABLE} ${INCLINO_SCRIPTS_DIR}/stack_report.py
+        --map ${dir}/${img}.map --elf $<TARGET_FILE:${img}> --nm ${INCLINO_NM}
+        --target ${INCLINO_TARGET} --out ${CMAKE_CURRENT_BINARY_DIR}/${img}.stack-check.txt
+        --indirect ${I_INDIRECT} --limit ${STACK_SIZE})
+    set_tests_properties(image_stack_${img} PROPERTIES LABELS "${INCLINO_TARGET};build"
+      TIMEOUT 60)
+  endif()
 
   add_test(NAME image_${img}
     COMMAND ${Python3_EXECUTABLE} ${INCLINO_SCRIPTS_DIR}/check_image.py image

@@ -16,7 +16,13 @@ Limits, stated in the report: calls through function pointers (the HAL ops table
 are not followed - each is listed as an indirect call of its caller; recursion is reported and
 cut; functions without stack information (libgcc, assembly) count as 0 bytes and are listed.
 
+With --indirect FILE (a board's list of what its calls through function pointers reach: lines
+"caller: callee callee ...", '#' comments), the report gives the depth a second time with those
+edges added, and names every function of the image that calls through a pointer and is not in
+the list (its pointer calls then still count as 0).
+
 Usage: stack_report.py --map X.map --elf X.elf --nm NM --target T --out X.stack.txt [--print]
+       [--indirect FILE]
 """
 import argparse
 import glob
@@ -101,6 +107,10 @@ def main():
     ap.add_argument("--out", required=True)
     ap.add_argument("--print", action="store_true")
     ap.add_argument("--top", type=int, default=10)
+    ap.add_argument("--indirect", help="caller: callees ... reached through function pointers")
+    ap.add_argument("--limit", type=int, help="with --indirect: exit 1 when the worst case "
+                    "exceeds this many bytes (the image's reserved stack), or when a pointer call "
+                    "of the image is not in the list")
     args = ap.parse_args()
 
     image = os.path.splitext(os.path.basename(args.elf))[0]
@@ -163,6 +173,7 @@ def main():
         memo[title] = (f["size"] + best[0], [title] + best[1], ind)
         return memo[title]
 
+    failed = []
     lines = [f"Stack report: {image} ({args.target})"]
     lines.append(f"Largest frames ({min(args.top, len(funcs))} of {len(funcs)} functions with "
                  "stack information):")
@@ -183,7 +194,7 @@ def main():
         if r is not None:
             roots.append((root, r))
     isr_names = sorted({f["name"] for f in funcs.values()
-                        if (f["name"].endswith("_Handler") and f["name"] not in
+                        if (f["name"].endswith("Handler") and f["name"] not in
                             ("Reset_Handler", "Default_Handler")) or f["name"] == "rt_irq_handler"})
     isrs = [(n, chain(n)) for n in isr_names]
     for name, (total, path, ind) in roots + isrs:
@@ -201,6 +212,79 @@ def main():
         lines.append(f"  estimate: reset path {reset[0]} + deepest handler {deepest_isr} + "
                      f"exception frame {frame} = {reset[0] + deepest_isr + frame} bytes "
                      "(one interrupt level; nesting adds per level)")
+    if args.indirect:
+        extra = {}
+        with open(args.indirect, encoding="utf-8") as f:
+            for raw in f:
+                line = raw.split("#", 1)[0].strip()
+                if not line:
+                    continue
+                caller, _sep, rest = line.partition(":")
+                if not _sep:
+                    sys.exit(f"stack_report.py: {args.indirect}: not 'caller: callees': {raw!r}")
+                extra.setdefault(caller.strip(), []).extend(rest.split())
+        ind_callers = sorted({funcs[t]["name"] for t, cs in calls.items()
+                              if INDIRECT in cs and t in funcs})
+        listed = {c for cs in extra.values() for c in cs}
+
+        def resolve_listed(name):
+            """A listed callee: 'name', or 'file.c:name' for a static function."""
+            if ":" not in name:
+                return resolve(name)
+            hits = [t for t in funcs if t.endswith("/" + name) or t == name]
+            return hits[0] if len(hits) == 1 else None
+        memo2 = {}
+
+        def depth_ind(title, stack):
+            if title in memo2:
+                return memo2[title]
+            if title in stack:
+                recursion.add(funcs[title]["name"])
+                return (0, [])
+            stack.add(title)
+            best = (0, [])
+            callees = [c for c in calls.get(title, []) if c != INDIRECT]
+            callees += extra.get(funcs[title]["name"], [])
+            for callee in callees:
+                r = resolve_listed(callee) if callee in listed else resolve(callee)
+                if r is None:
+                    continue
+                d = depth_ind(r, stack)
+                if (d[0], len(d[1])) > (best[0], len(best[1])):
+                    best = d
+            stack.discard(title)
+            memo2[title] = (funcs[title]["size"] + best[0], [title] + best[1])
+            return memo2[title]
+
+        lines.append("Worst-case depth with the calls through function pointers of "
+                     f"{os.path.basename(args.indirect)}:")
+        res = []
+        for name, _r in roots + isrs:
+            d = depth_ind(resolve(name), set())
+            res.append((name, d))
+            lines.append(f"  {name:<20} {d[0]:>6} bytes: "
+                         + " > ".join(funcs[x]["name"] for x in d[1]))
+        r2 = next((d for n, d in res if n in ("Reset_Handler", "_start")), None)
+        if r2 is not None:
+            frame = 0
+            if args.target.startswith("cortex-m"):
+                frame = 104 if args.target == "cortex-m4f" else 32
+            deepest2 = max((d[0] for n, d in res if n in isr_names), default=0)
+            lines.append(f"  worst case: reset path {r2[0]} + deepest handler {deepest2} + "
+                         f"exception frame {frame} = {r2[0] + deepest2 + frame} bytes "
+                         "(one interrupt level)")
+        missing = [n for n in ind_callers if n not in extra]
+        if args.limit is not None:
+            worst = r2[0] + deepest2 + frame if r2 is not None else None
+            if worst is None or worst > args.limit or missing:
+                failed.append(f"worst case {worst} bytes against {args.limit} reserved"
+                              + (", pointer calls not listed: " + ", ".join(missing)
+                                 if missing else ""))
+        unknown_targets = sorted(c for c in listed if resolve_listed(c) is None)
+        lines.append("  pointer calls not in the list (counted as 0): "
+                     + (", ".join(missing) if missing else "none"))
+        if unknown_targets:
+            lines.append("  listed callees not in the image: " + ", ".join(unknown_targets))
     if recursion:
         lines.append("  recursion (cut, depth not bounded by this analysis): "
                      + ", ".join(sorted(recursion)))
@@ -214,6 +298,8 @@ def main():
         f.write(report)
     if args.print:
         sys.stdout.write(report)
+    if failed:
+        sys.exit("stack_report.py: " + image + ": " + "; ".join(failed))
 
 
 if __name__ == "__main__":
