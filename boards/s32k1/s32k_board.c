@@ -83,11 +83,22 @@ static int lpspi_up(struct s32k_board *b)
         lc.pcs_pin[p->cs_acc_pcs] = p->cs_acc;
     }
     lc.timeout_ns = 0;
+    lc.irq_wait = true; /* sleep while the FIFO drains (the vector calls s32k_board_lpspi_isr) */
     err = spi_lpspi_init(&b->lp, &lc);
     if (err == INC_OK) {
+        s32k_mmio_write32(S32K_NVIC_ICPR(S32K1_IRQ_LPSPI0 / 32u), 1u << (S32K1_IRQ_LPSPI0 % 32u));
+        s32k_mmio_write32(S32K_NVIC_ISER(S32K1_IRQ_LPSPI0 / 32u), 1u << (S32K1_IRQ_LPSPI0 % 32u));
         b->spi = &b->lp.bus;
     }
     return err;
+}
+
+void s32k_board_lpspi_isr(struct s32k_board *b)
+{
+    if (b != NULL) {
+        spi_lpspi_isr(&b->lp);
+        s32k_hal_wake(&b->port);
+    }
 }
 
 int s32k_board_init_core(struct s32k_board *b, const struct s32k_board_desc *desc, bool watchdog)

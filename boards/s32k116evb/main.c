@@ -1,7 +1,7 @@
 /*
  * main.c - the S32K116EVB image: the EPB application on the board (boards/s32k1/s32k_image.c)
  * and this part's vectors: one PORT vector for all five ports, LPIT0 (one vector for all
- * channels). The startup (boards/s32k1/startup_s32k1.c) has configured the watchdog before main.
+ * channels), LPSPI0 (the LPSPI engine's wake-up, when an image brings it up). The startup (boards/s32k1/startup_s32k1.c) has configured the watchdog before main.
  */
 #include <stdint.h>
 
@@ -9,6 +9,7 @@
 
 void PORT_IRQHandler(void);
 void LPIT0_IRQHandler(void);
+void LPSPI0_IRQHandler(void);
 
 void PORT_IRQHandler(void)
 {
@@ -21,6 +22,11 @@ void PORT_IRQHandler(void)
 void LPIT0_IRQHandler(void)
 {
     s32k_board_lpit_isr(&s32k_image_board);
+}
+
+void LPSPI0_IRQHandler(void)
+{
+    s32k_board_lpspi_isr(&s32k_image_board);
 }
 
 int main(void)

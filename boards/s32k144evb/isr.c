@@ -1,6 +1,7 @@
 /*
  * isr.c - the S32K144's interrupt vectors the S32K1 port uses, shared by this board's images:
- * one PORT vector per port (PORTA..PORTE) and LPIT0 channel 1 (the time base), each calling the
+ * one PORT vector per port (PORTA..PORTE), LPIT0 channel 1 (the time base) and LPSPI0 (the
+ * LPSPI engine's wake-up, when an image brings it up), each calling the
  * bring-up's ISR on s32k_image_board (boards/s32k1/s32k_image.h).
  */
 #include "s32k_image.h"
@@ -11,6 +12,7 @@ void PORTC_IRQHandler(void);
 void PORTD_IRQHandler(void);
 void PORTE_IRQHandler(void);
 void LPIT0_Ch1_IRQHandler(void);
+void LPSPI0_IRQHandler(void);
 
 void PORTA_IRQHandler(void)
 {
@@ -40,4 +42,9 @@ void PORTE_IRQHandler(void)
 void LPIT0_Ch1_IRQHandler(void)
 {
     s32k_board_lpit_isr(&s32k_image_board);
+}
+
+void LPSPI0_IRQHandler(void)
+{
+    s32k_board_lpspi_isr(&s32k_image_board);
 }

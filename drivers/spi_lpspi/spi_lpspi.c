@@ -249,6 +249,15 @@ static int lp_transfer(void *ctx, struct spi_dev *dev, const uint16_t *tx, uint1
             waiter_arm(lp, &w, 2u * (uint64_t)word_ns);
         } else if (waiter_expired(lp, &w)) {
             return fail(lp, INC_ERR_TIMEOUT);
+        } else if (lp->cfg.irq_wait && sent > got) {
+            /* RDF once every word in flight is in; TEF/REF wake it too. */
+            wr(lp, LPSPI_FCR, (uint32_t)(sent - got - 1u) << LPSPI_FCR_RXWATER_SHIFT);
+            wr(lp, LPSPI_IER, LPSPI_IER_RDIE | LPSPI_IER_TEIE | LPSPI_IER_REIE);
+            lp->stats.sleeps++;
+            /* INC_ERR_STATE (interrupts masked by the caller): it returned at once, the loop
+             * polls; INC_ERR_TIMEOUT: the next look finds no progress past the deadline. */
+            (void)hal_irq_wait(hal, w.deadline);
+            wr(lp, LPSPI_IER, 0u);
         }
     }
 
@@ -283,6 +292,13 @@ static int lp_transfer(void *ctx, struct spi_dev *dev, const uint16_t *tx, uint1
     lp->last_cs = dev->cfg.cs;
     lp->last_release_ns = dev->cs_release_ns;
     return INC_OK;
+}
+
+void spi_lpspi_isr(struct spi_lpspi *lp)
+{
+    if (lp != NULL) {
+        wr(lp, LPSPI_IER, 0u);
+    }
 }
 
 static const struct spi_bus_ops lp_ops = {
@@ -347,6 +363,7 @@ int spi_lpspi_init(struct spi_lpspi *lp, const struct spi_lpspi_cfg *cfg)
     lp->stats.errors = 0;
     lp->stats.last_sr = 0;
     lp->stats.max_in_flight = 0;
+    lp->stats.sleeps = 0;
     setup_module(lp);
     wr(lp, LPSPI_CR, LPSPI_CR_MEN);
     return INC_OK;

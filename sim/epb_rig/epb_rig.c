@@ -299,6 +299,11 @@ static void s32k_port_isr4(void *arg)
 {
     s32k_board_port_isr(arg, 4u);
 }
+static void s32k_lpspi_isr(void *arg)
+{
+    s32k_board_lpspi_isr(arg);
+}
+
 static void s32k_lpit_isr(void *arg)
 {
     s32k_board_lpit_isr(arg);
@@ -330,6 +335,8 @@ static int rig_lpspi_up(struct epb_rig *r, const struct s32k_board_desc *d)
         mc.pcs[k] = SIM_LPSPI_NO_PIN;
     }
     mc.pcs[pcs] = SIM_BOARD_CS(0);
+    mc.core = &r->s32k_core; /* the engine sleeps on LPSPI0's interrupt (s32k_board.h) */
+    mc.irq = S32K1_IRQ_LPSPI0;
     return sim_s32k_lpspi_init(&r->s32k_lpspi, &mc);
 }
 
@@ -395,6 +402,7 @@ int epb_rig_set_board_spi(struct epb_rig *r, enum epb_rig_board board, bool lpsp
         sim_s32k_core_set_handler(&r->s32k_core, S32K144_IRQ_PORTA + i, port_isr[i], &r->s32k);
     }
     sim_s32k_core_set_handler(&r->s32k_core, S32K144_IRQ_LPIT0_CH1, s32k_lpit_isr, &r->s32k);
+    sim_s32k_core_set_handler(&r->s32k_core, S32K1_IRQ_LPSPI0, s32k_lpspi_isr, &r->s32k);
     /* What the startup does first, then the board's bring-up. */
     err = s32k_wdog_init(true);
     if (err == INC_OK && lpspi) {

@@ -9,7 +9,9 @@
  * pins in their LPSPI mux). Both serve struct spi_bus, so the drivers cannot tell them apart.
  * With LPSPI, SCK/SOUT/SIN and every chip select that is an LPSPI0 PCS pin (cs_imu_pcs,
  * cs_acc_pcs) are muxed to LPSPI0, clocked from SPLLDIV2 (40 MHz) or FIRCDIV2 (24 MHz) by the
- * board's clock; a chip select without a PCS stays a GPIO held high, and a device on it is
+ * board's clock, and the engine sleeps on LPSPI0's interrupt (IRQ 26, enabled in the NVIC here;
+ * the image's LPSPI0_IRQHandler calls s32k_board_lpspi_isr) while its FIFO drains; a chip
+ * select without a PCS stays a GPIO held high, and a device on it is
  * refused by the engine (INC_ERR_INVAL at spi_dev_init) (docs/boards.md, "SPI engine").
  */
 #ifndef INCLINO_S32K_BOARD_H
@@ -100,9 +102,11 @@ int s32k_board_spi_lpspi(struct s32k_board *b);
  * PSOR/PCOR/PDIR and the port's inlined short delays, no call per bit. */
 uint16_t s32k_board_bb_frame(void *ctx, const struct spi_bitbang_frame *fr, bool *mosi_out);
 
-/* The board's vector entries call these (PORT pin interrupt, LPIT0). */
+/* The board's vector entries call these (PORT pin interrupt, LPIT0, LPSPI0: the LPSPI engine
+ * sleeps on its interrupt while the FIFO drains, spi_lpspi.h). */
 void s32k_board_port_isr(struct s32k_board *b, uint32_t port);
 void s32k_board_lpit_isr(struct s32k_board *b);
+void s32k_board_lpspi_isr(struct s32k_board *b);
 
 #ifdef __cplusplus
 }

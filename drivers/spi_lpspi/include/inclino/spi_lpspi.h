@@ -27,9 +27,18 @@
  * When the SCK idle level (CPOL) changes, the engine loads the command and waits half a period
  * with every PCS negated before the first frame, as the bit-banged engine does.
  *
- * FIFO, no DMA, no interrupt: the CPU keeps the TX FIFO filled (never more words in flight than
- * the RX FIFO holds, read from PARAM, so RX cannot overflow), watermarks 0, and polls FSR/SR.
- * SPI_CS_HOLD is one continuous transfer (TCR CONT) ended by a command with CONT = 0.
+ * FIFO, no DMA: the CPU keeps the TX FIFO filled (never more words in flight than the RX FIFO
+ * holds, read from PARAM, so RX cannot overflow). SPI_CS_HOLD is one continuous transfer (TCR
+ * CONT) ended by a command with CONT = 0. How the CPU waits for the words in flight:
+ *   cfg.irq_wait false  it polls FSR/SR (watermarks 0): busy for the whole bus time;
+ *   cfg.irq_wait true   it sets the RX watermark to the words in flight (RDF when they are
+ *                       all in), enables RDIE/TEIE/REIE and sleeps in hal_irq_wait (the port's
+ *                       WFI) until the deadline of the wait; the board's LPSPI interrupt
+ *                       handler calls spi_lpspi_isr (which disables the enables again) and wakes
+ *                       the HAL (s32k_hal_wake). With a 4-word FIFO a 13-word ADIS burst is
+ *                       4 sleeps; the CPU runs only to refill the FIFO. Any other interrupt
+ *                       (a data-ready edge) only makes the engine look again. The last wait of
+ *                       a transfer (PCS negated, SCK->PCS delay: a few counts) polls.
  *
  * Errors (the module is reset and re-programmed on the next transfer; rx must not be used):
  *   INC_ERR_TIMING   the timing does not fit the LPSPI counters at this clock;
@@ -65,6 +74,7 @@ struct spi_lpspi_cfg {
     uint32_t fclk_hz;      /* the LPSPI functional clock (PCC PCS selection), > 0 */
     hal_pin_t pcs_pin[SPI_LPSPI_PCS_COUNT]; /* the CS pin PCSk drives, or HAL_PIN_NONE */
     uint32_t timeout_ns;                    /* 0: SPI_LPSPI_TIMEOUT_DEFAULT_NS */
+    bool irq_wait; /* sleep on the LPSPI interrupt instead of polling (see above) */
 };
 
 /* The register fields one device's timing maps to (see the mapping above). */
@@ -78,6 +88,7 @@ struct spi_lpspi_stats {
     uint32_t errors;        /* transfers that failed */
     uint32_t last_sr;       /* SR at the last error */
     uint32_t max_in_flight; /* most words in the FIFOs at once */
+    uint32_t sleeps;        /* hal_irq_wait calls (cfg.irq_wait) */
 };
 
 struct spi_lpspi {
@@ -99,6 +110,11 @@ struct spi_lpspi {
  * INC_ERR_NULL, INC_ERR_INVAL (fclk 0, no PCS pin, a pin twice) or INC_ERR_UNSUPPORTED (PARAM).
  */
 int spi_lpspi_init(struct spi_lpspi *lp, const struct spi_lpspi_cfg *cfg);
+
+/* The LPSPI interrupt's work (cfg.irq_wait): disable the interrupt enables, so the level that
+ * woke the CPU does not fire again; the engine re-reads the status. Call it from the board's
+ * LPSPIn_IRQHandler, then wake the HAL. NULL: nothing. */
+void spi_lpspi_isr(struct spi_lpspi *lp);
 
 /*
  * The register fields for timing t with policy cs at fclk_hz (the mapping above). Returns 0,

@@ -57,6 +57,11 @@
 #define LPSPI_SR_MBF (1u << 24)
 #define LPSPI_SR_W1C_MASK 0x3F00u
 
+/* IER: an interrupt enable per SR flag, same bit positions. */
+#define LPSPI_IER_RDIE LPSPI_SR_RDF
+#define LPSPI_IER_TEIE LPSPI_SR_TEF
+#define LPSPI_IER_REIE LPSPI_SR_REF
+
 /* CFGR1 */
 #define LPSPI_CFGR1_MASTER (1u << 0)
 #define LPSPI_CFGR1_SAMPLE (1u << 1)

@@ -155,6 +155,13 @@ void s32k_hal_lpit_isr(struct s32k_hal *p)
     }
 }
 
+void s32k_hal_wake(struct s32k_hal *p)
+{
+    if (p != NULL) {
+        p->irq_count++;
+    }
+}
+
 static int p_irq_wait(void *ctx, uint64_t deadline_ns)
 {
     struct s32k_hal *p = ctx;

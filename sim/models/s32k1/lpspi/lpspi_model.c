@@ -56,6 +56,7 @@ static void sample(struct sim_s32k_lpspi *m)
 }
 
 static void on_event(void *arg, uint64_t now);
+static void irq_update(struct sim_s32k_lpspi *m);
 
 static void at(struct sim_s32k_lpspi *m, enum sim_lpspi_phase ph, uint64_t t)
 {
@@ -163,6 +164,7 @@ static void on_event(void *arg, uint64_t now)
     case SIM_LPSPI_HOLDING:
     default: break;
     }
+    irq_update(m);
 }
 
 static bool running(const struct sim_s32k_lpspi *m)
@@ -264,6 +266,15 @@ static uint32_t status(const struct sim_s32k_lpspi *m)
         sr |= LPSPI_SR_MBF;
     }
     return sr;
+}
+
+/* The interrupt line: an enabled flag is set. */
+static void irq_update(struct sim_s32k_lpspi *m)
+{
+    if (m->cfg.core != NULL && (status(m) & m->ier) != 0u) {
+        m->irqs++;
+        sim_s32k_core_raise(m->cfg.core, m->cfg.irq);
+    }
 }
 
 static uint32_t reg_read(void *ctx, uint32_t off, unsigned width)
@@ -373,6 +384,7 @@ static void reg_write(void *ctx, uint32_t off, uint32_t v, unsigned width)
     case LPSPI_TDR: push_tx(m, v, false); break;
     default: break;
     }
+    irq_update(m);
 }
 
 static const struct s32k_bus_region_ops lpspi_ops = {reg_read, reg_write};

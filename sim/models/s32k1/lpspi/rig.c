@@ -33,6 +33,8 @@ int sim_lpspi_rig_init(struct sim_lpspi_rig *r, struct sim_board *b, uint32_t fc
     for (k = 0; k < SIM_LPSPI_PCS; k++) {
         mc.pcs[k] = SIM_BOARD_CS(k);
     }
+    mc.core = NULL; /* the standard board's HAL has no NVIC: the engine polls */
+    mc.irq = 0u;
     err = sim_s32k_lpspi_init(&r->model, &mc);
     if (err != INC_OK) {
         return err;
@@ -45,5 +47,6 @@ int sim_lpspi_rig_init(struct sim_lpspi_rig *r, struct sim_board *b, uint32_t fc
         ec.pcs_pin[k] = (hal_pin_t)SIM_BOARD_CS(k);
     }
     ec.timeout_ns = 0;
+    ec.irq_wait = false;
     return spi_lpspi_init(&r->engine, &ec);
 }

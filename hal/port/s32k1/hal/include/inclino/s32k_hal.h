@@ -123,6 +123,11 @@ void s32k_hal_port_isr(struct s32k_hal *p, uint32_t port);
 /* Body of the LPIT0 vector (channel 1 wake-up). */
 void s32k_hal_lpit_isr(struct s32k_hal *p);
 
+/* For another peripheral's interrupt handler whose event a driver sleeps on in hal_irq_wait
+ * (the LPSPI engine with irq_wait): counts as a callback run, so irq_wait returns 0. Interrupt
+ * context. NULL: nothing. */
+void s32k_hal_wake(struct s32k_hal *p);
+
 #ifdef __cplusplus
 }
 #endif

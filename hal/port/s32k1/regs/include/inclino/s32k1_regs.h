@@ -161,6 +161,7 @@ enum s32k_part {
 #define S32K144_IRQ_LPIT0_CH1 49u
 /* S32K116: one vector for every port (PORT 9), one for all LPIT0 channels (20). */
 #define S32K116_IRQ_PORT 9u
+#define S32K1_IRQ_LPSPI0 26u /* both parts */
 #define S32K116_IRQ_LPIT0 20u
 
 #endif /* INCLINO_S32K1_REGS_H */

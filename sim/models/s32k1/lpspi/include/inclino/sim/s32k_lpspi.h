@@ -24,6 +24,11 @@
  * finds the RX FIFO full (dropped). CCR and CFGR1 written while CR MEN = 1 are ignored and
  * counted (locked_writes), as they must only be written with the module disabled.
  *
+ * Interrupt: when cfg.core is set, the model raises cfg.irq in that core's NVIC
+ * (sim_s32k_core_raise) whenever a flag enabled in IER is set after a register access or a
+ * shifter event (a level that stays high is raised again on every change, as the NVIC re-pends
+ * a peripheral line that is still asserted).
+ *
  * Faults for the tests: force_tef / force_ref set the flag at the next word; stall_engine stops
  * the shifter (the module stays busy, nothing moves: the driver must time out).
  */
@@ -36,6 +41,7 @@
 #include "inclino/error.h"
 #include "inclino/sim/clock.h"
 #include "inclino/sim/pinbus.h"
+#include "inclino/sim/s32k_core.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -52,6 +58,8 @@ struct sim_s32k_lpspi_cfg {
     struct sim_pinbus *bus;
     unsigned sck, sout, sin;
     unsigned pcs[SIM_LPSPI_PCS]; /* pin of PCSk, or SIM_LPSPI_NO_PIN */
+    struct sim_s32k_core *core;  /* the interrupt goes to this core's NVIC (NULL: none) */
+    unsigned irq;                /* its IRQ number (S32K1_IRQ_LPSPI0) */
 };
 
 enum sim_lpspi_phase {
@@ -88,6 +96,7 @@ struct sim_s32k_lpspi {
     bool force_tef, force_ref, stall_engine;
     /* statistics */
     uint32_t frames, words, locked_writes, bad_commands;
+    uint32_t irqs; /* times the interrupt was raised */
     uint64_t t_first_assert, t_last_negate; /* bus time: first PCS fall, latest PCS rise */
 };
 
