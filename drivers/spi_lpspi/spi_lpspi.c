@@ -149,6 +149,12 @@ static bool waiter_expired(const struct spi_lpspi *lp, struct waiter *w)
     return ++w->polls > SPI_LPSPI_POLL_LIMIT || hal_now_ns(lp->cfg.hal) > w->deadline;
 }
 
+static bool same_timing(const struct spi_timing *a, const struct spi_timing *b)
+{
+    return a->sclk_period_ns == b->sclk_period_ns && a->cs_setup_ns == b->cs_setup_ns &&
+           a->cs_hold_ns == b->cs_hold_ns && a->stall_ns == b->stall_ns && a->gap_ns == b->gap_ns;
+}
+
 static int lp_transfer(void *ctx, struct spi_dev *dev, const uint16_t *tx, uint16_t *rx, size_t n,
                        enum spi_cs_policy cs)
 {
@@ -164,15 +170,40 @@ static int lp_transfer(void *ctx, struct spi_dev *dev, const uint16_t *tx, uint1
     uint32_t ccr, tcr, word_ns, n_counts;
     size_t sent = 0, got = 0;
     bool end_pending = cs == SPI_CS_HOLD;
+    bool slept_out = false;
     int err;
 
     if (pcs < 0) {
         return INC_ERR_INVAL;
     }
-    err = spi_lpspi_clock_for(lp->cfg.fclk_hz, t, cs, &c);
-    if (err != INC_OK) {
-        return err; /* nothing reached the bus */
+    /* The register fields of this timing: computed once per timing (64-bit divisions), kept
+     * while the same device timing and CS policy come again. */
+    if (!lp->ck_valid || lp->ck_cs != (uint8_t)cs || !same_timing(&lp->ck_t, t)) {
+        err = spi_lpspi_clock_for(lp->cfg.fclk_hz, t, cs, &c);
+        if (err != INC_OK) {
+            return err; /* nothing reached the bus */
+        }
+        /* One word on the wire, generously: setup, bits, hold and the gap or stall after it. */
+        n_counts = (uint32_t)c.pcssck + 1u + bits * ((uint32_t)c.sckdiv + 2u) +
+                   (uint32_t)c.sckpcs + 1u + (uint32_t)c.dbt + 2u;
+        lp->ck = c;
+        lp->ck_t = *t;
+        lp->ck_cs = (uint8_t)cs;
+        lp->ck_bits = (uint8_t)bits;
+        lp->ck_word_ns = spi_lpspi_counts_ns(lp->cfg.fclk_hz, c.prescale, n_counts);
+        lp->ck_hold_ns =
+            spi_lpspi_counts_ns(lp->cfg.fclk_hz, c.prescale, (uint32_t)c.sckpcs + 1u);
+        lp->ck_settle_ns = spi_lpspi_counts_ns(lp->cfg.fclk_hz, c.prescale,
+                                               ((uint32_t)c.sckdiv + 3u) / 2u);
+        lp->ck_valid = true;
+    } else if (lp->ck_bits != (uint8_t)bits) {
+        n_counts = (uint32_t)lp->ck.pcssck + 1u + bits * ((uint32_t)lp->ck.sckdiv + 2u) +
+                   (uint32_t)lp->ck.sckpcs + 1u + (uint32_t)lp->ck.dbt + 2u;
+        lp->ck_word_ns = spi_lpspi_counts_ns(lp->cfg.fclk_hz, lp->ck.prescale, n_counts);
+        lp->ck_bits = (uint8_t)bits;
     }
+    c = lp->ck;
+    word_ns = lp->ck_word_ns;
     ccr = ccr_of(&c);
     if ((rd(lp, LPSPI_SR) & LPSPI_SR_MBF) != 0u) {
         return fail(lp, INC_ERR_BUSY);
@@ -185,11 +216,6 @@ static int lp_transfer(void *ctx, struct spi_dev *dev, const uint16_t *tx, uint1
         lp->programmed = true;
         lp->stats.reconfigs++;
     }
-
-    /* One word on the wire, generously: setup, bits, hold and the gap or stall after it. */
-    n_counts = (uint32_t)c.pcssck + 1u + bits * ((uint32_t)c.sckdiv + 2u) + (uint32_t)c.sckpcs +
-               1u + (uint32_t)c.dbt + 2u;
-    word_ns = spi_lpspi_counts_ns(lp->cfg.fclk_hz, c.prescale, n_counts);
 
     if (dev->released_once) {
         hal_delay_until(hal, dev->cs_release_ns + t->stall_ns);
@@ -205,13 +231,14 @@ static int lp_transfer(void *ctx, struct spi_dev *dev, const uint16_t *tx, uint1
     wr(lp, LPSPI_TCR, tcr);
     if (!lp->cpol_known || lp->cpol != cpol) {
         /* SCK moves to its new idle level with every PCS negated: let it settle. */
-        hal_delay_ns(
-            hal, spi_lpspi_counts_ns(lp->cfg.fclk_hz, c.prescale, ((uint32_t)c.sckdiv + 3u) / 2u));
+        hal_delay_ns(hal, lp->ck_settle_ns);
         lp->cpol = cpol;
         lp->cpol_known = true;
     }
 
-    waiter_arm(lp, &w, 2u * (uint64_t)word_ns);
+    /* One deadline for all the words (twice their bus time + cfg.timeout_ns): the clock is read
+     * when nothing moved, not after every word. */
+    waiter_arm(lp, &w, 2u * (uint64_t)(n + 1u) * word_ns);
     while (got < n) {
         const uint32_t sr = rd(lp, LPSPI_SR);
         uint32_t fsr;
@@ -246,18 +273,23 @@ static int lp_transfer(void *ctx, struct spi_dev *dev, const uint16_t *tx, uint1
             lp->stats.max_in_flight = (uint32_t)(sent - got);
         }
         if (progress) {
-            waiter_arm(lp, &w, 2u * (uint64_t)word_ns);
-        } else if (waiter_expired(lp, &w)) {
-            return fail(lp, INC_ERR_TIMEOUT);
-        } else if (lp->cfg.irq_wait && sent > got) {
+            w.polls = 0;
+        } else if (lp->cfg.irq_wait && sent > got && !slept_out) {
             /* RDF once every word in flight is in; TEF/REF wake it too. */
+            int r;
             wr(lp, LPSPI_FCR, (uint32_t)(sent - got - 1u) << LPSPI_FCR_RXWATER_SHIFT);
             wr(lp, LPSPI_IER, LPSPI_IER_RDIE | LPSPI_IER_TEIE | LPSPI_IER_REIE);
             lp->stats.sleeps++;
-            /* INC_ERR_STATE (interrupts masked by the caller): it returned at once, the loop
-             * polls; INC_ERR_TIMEOUT: the next look finds no progress past the deadline. */
-            (void)hal_irq_wait(hal, w.deadline);
+            r = hal_irq_wait(hal, w.deadline);
             wr(lp, LPSPI_IER, 0u);
+            /* INC_ERR_TIMEOUT: one more look, then the deadline decides; INC_ERR_STATE
+             * (interrupts masked by the caller): it returned at once, the loop polls. */
+            slept_out = r == INC_ERR_TIMEOUT || r == INC_ERR_STATE;
+            if (++w.polls > SPI_LPSPI_POLL_LIMIT) {
+                return fail(lp, INC_ERR_TIMEOUT);
+            }
+        } else if (waiter_expired(lp, &w)) {
+            return fail(lp, INC_ERR_TIMEOUT);
         }
     }
 
@@ -285,8 +317,7 @@ static int lp_transfer(void *ctx, struct spi_dev *dev, const uint16_t *tx, uint1
     }
     /* The stall counts from the PCS rise; if MBF dropped before the SCK->PCS delay ended
      * (docs/unconfirmed-facts.md), counting from now + that delay is still safe. */
-    dev->cs_release_ns = hal_now_ns(hal) +
-                         spi_lpspi_counts_ns(lp->cfg.fclk_hz, c.prescale, (uint32_t)c.sckpcs + 1u);
+    dev->cs_release_ns = hal_now_ns(hal) + lp->ck_hold_ns;
     dev->released_once = true;
     lp->released_any = true;
     lp->last_cs = dev->cfg.cs;
@@ -364,6 +395,7 @@ int spi_lpspi_init(struct spi_lpspi *lp, const struct spi_lpspi_cfg *cfg)
     lp->stats.last_sr = 0;
     lp->stats.max_in_flight = 0;
     lp->stats.sleeps = 0;
+    lp->ck_valid = false;
     setup_module(lp);
     wr(lp, LPSPI_CR, LPSPI_CR_MEN);
     return INC_OK;

@@ -44,8 +44,10 @@
  *   INC_ERR_TIMING   the timing does not fit the LPSPI counters at this clock;
  *   INC_ERR_BUSY     the module was still busy (SR MBF) before a transfer started;
  *   INC_ERR_BUS      SR TEF (TX FIFO underrun) or REF (RX FIFO overflow) was set;
- *   INC_ERR_TIMEOUT  a word or the end of the transfer did not come within its expected bus
- *                    time + cfg.timeout_ns (or SPI_LPSPI_POLL_LIMIT status reads);
+ *   INC_ERR_TIMEOUT  the words did not all come within twice their expected bus time +
+ *                    cfg.timeout_ns, or the end of the transfer within a word's time +
+ *                    cfg.timeout_ns (or SPI_LPSPI_POLL_LIMIT status reads or sleeps without
+ *                    progress);
  *   INC_ERR_UNSUPPORTED  PARAM reports a FIFO or PCS count this engine cannot use (init).
  */
 #ifndef INCLINO_SPI_LPSPI_H
@@ -102,6 +104,12 @@ struct spi_lpspi {
     bool released_any;
     hal_pin_t last_cs;
     uint64_t last_release_ns;
+    /* the register fields of the last timing (spi_lpspi_clock_for), kept while it repeats */
+    bool ck_valid;
+    uint8_t ck_cs, ck_bits;
+    struct spi_timing ck_t;
+    struct spi_lpspi_clock ck;
+    uint32_t ck_word_ns, ck_hold_ns, ck_settle_ns;
     struct spi_lpspi_stats stats;
 };
 

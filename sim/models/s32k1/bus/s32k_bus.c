@@ -17,9 +17,30 @@ static unsigned n_regions;
 static struct s32k_bus_stats stats;
 static void (*hook_fn)(void *ctx);
 static void *hook_ctx;
+static const struct s32k_bus_meter *meter;
+
+void s32k_bus_set_meter(const struct s32k_bus_meter *m)
+{
+    meter = m;
+}
+
+void s32k_bus_meter_enter(void)
+{
+    if (meter != NULL) {
+        meter->enter();
+    }
+}
+
+void s32k_bus_meter_leave(void)
+{
+    if (meter != NULL) {
+        meter->leave();
+    }
+}
 
 void s32k_bus_reset(void)
 {
+    meter = NULL;
     n_regions = 0;
     hook_fn = NULL;
     hook_ctx = NULL;
@@ -106,30 +127,48 @@ static void bus_write(uint32_t addr, uint32_t value, unsigned width)
 
 uint32_t s32k_mmio_read32(uint32_t addr)
 {
-    return bus_read(addr, 4u);
+    uint32_t v;
+    s32k_bus_meter_enter();
+    v = bus_read(addr, 4u);
+    s32k_bus_meter_leave();
+    return v;
 }
 
 void s32k_mmio_write32(uint32_t addr, uint32_t value)
 {
+    s32k_bus_meter_enter();
     bus_write(addr, value, 4u);
+    s32k_bus_meter_leave();
 }
 
 uint16_t s32k_mmio_read16(uint32_t addr)
 {
-    return (uint16_t)bus_read(addr, 2u);
+    uint16_t v;
+    s32k_bus_meter_enter();
+    v = (uint16_t)bus_read(addr, 2u);
+    s32k_bus_meter_leave();
+    return v;
 }
 
 void s32k_mmio_write16(uint32_t addr, uint16_t value)
 {
+    s32k_bus_meter_enter();
     bus_write(addr, value, 2u);
+    s32k_bus_meter_leave();
 }
 
 uint8_t s32k_mmio_read8(uint32_t addr)
 {
-    return (uint8_t)bus_read(addr, 1u);
+    uint8_t v;
+    s32k_bus_meter_enter();
+    v = (uint8_t)bus_read(addr, 1u);
+    s32k_bus_meter_leave();
+    return v;
 }
 
 void s32k_mmio_write8(uint32_t addr, uint8_t value)
 {
+    s32k_bus_meter_enter();
     bus_write(addr, value, 1u);
+    s32k_bus_meter_leave();
 }

@@ -39,7 +39,9 @@ static void deliver(struct sim_s32k_core *c)
         c->pending[irq / 32u] &= ~(1u << (irq % 32u));
         if (c->isr[irq] != NULL) {
             c->isr_depth++;
+            s32k_bus_meter_leave(); /* the handler is firmware */
             c->isr[irq](c->isr_arg[irq]);
+            s32k_bus_meter_enter();
             c->isr_depth--;
             c->delivered++;
         }
@@ -72,18 +74,22 @@ uint32_t s32k_cpu_irq_save(void)
     if (c == NULL) {
         return 1u;
     }
+    s32k_bus_meter_enter();
     old = c->primask ? 1u : 0u;
     c->primask = true;
+    s32k_bus_meter_leave();
     return old;
 }
 
 void s32k_cpu_irq_restore(uint32_t primask)
 {
     struct sim_s32k_core *c = the_core;
+    s32k_bus_meter_enter();
     if (c != NULL && (primask & 1u) == 0u) {
         c->primask = false;
         deliver(c);
     }
+    s32k_bus_meter_leave();
 }
 
 void s32k_cpu_wfi(void)
@@ -93,11 +99,13 @@ void s32k_cpu_wfi(void)
     if (c == NULL) {
         return;
     }
+    s32k_bus_meter_enter(); /* asleep: no firmware instruction runs */
     while (!deliverable(c, &irq)) {
         if (!sim_clock_step(c->clk)) {
-            return;
+            break;
         }
     }
+    s32k_bus_meter_leave();
 }
 
 /* ---- NVIC registers (0xE000E100 .. 0xE000E2FF) ---- */

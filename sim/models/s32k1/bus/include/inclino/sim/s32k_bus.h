@@ -59,6 +59,22 @@ int s32k_bus_map(uint32_t base, uint32_t size, const struct s32k_bus_region_ops 
 /* Call hook(ctx) after every access; NULL removes it. */
 void s32k_bus_set_hook(void (*hook)(void *ctx), void *ctx);
 
+/*
+ * The meter, for benchmarks that count the firmware's own instructions under QEMU
+ * (benches/s32k1/bench_s32k_cpu_cm.c): enter() is called first thing in every s32k_mmio_*
+ * access and in the simulated PRIMASK/WFI seam (sim/models/s32k1/core), leave() last; the core
+ * calls leave() before and enter() after a firmware interrupt handler it runs from inside a
+ * model, so the handler counts as firmware. The calls nest (the benchmark keeps the depth).
+ * NULL: no meter (the default, and after s32k_bus_reset).
+ */
+struct s32k_bus_meter {
+    void (*enter)(void);
+    void (*leave)(void);
+};
+void s32k_bus_set_meter(const struct s32k_bus_meter *m);
+void s32k_bus_meter_enter(void);
+void s32k_bus_meter_leave(void);
+
 /* The statistics since the last reset. */
 const struct s32k_bus_stats *s32k_bus_stats(void);
 
