@@ -10,6 +10,12 @@ static uint16_t read_cmd(uint8_t addr)
 
 int adis_read_regs(struct spi_dev *dev, const uint8_t *addrs, uint16_t *values, size_t n)
 {
+    return adis_read_regs_tail(dev, addrs, values, n, 0x00u, NULL);
+}
+
+int adis_read_regs_tail(struct spi_dev *dev, const uint8_t *addrs, uint16_t *values, size_t n,
+                        uint8_t tail_addr, uint16_t *first)
+{
     uint16_t tx[ADIS_MAX_PIPELINE + 1u];
     uint16_t rx[ADIS_MAX_PIPELINE + 1u];
     size_t i;
@@ -17,7 +23,7 @@ int adis_read_regs(struct spi_dev *dev, const uint8_t *addrs, uint16_t *values, 
     if (dev == NULL || addrs == NULL || values == NULL) {
         return INC_ERR_NULL;
     }
-    if (n == 0u || n > ADIS_MAX_PIPELINE) {
+    if (n == 0u || n > ADIS_MAX_PIPELINE || tail_addr > ADIS_ADDR_MAX) {
         return INC_ERR_INVAL;
     }
     for (i = 0; i < n; i++) {
@@ -26,13 +32,16 @@ int adis_read_regs(struct spi_dev *dev, const uint8_t *addrs, uint16_t *values, 
         }
         tx[i] = read_cmd(addrs[i]);
     }
-    tx[n] = read_cmd(0x00u);
+    tx[n] = read_cmd(tail_addr);
     err = spi_transfer(dev, tx, rx, n + 1u, SPI_CS_TOGGLE);
     if (err != INC_OK) {
         return err;
     }
     for (i = 0; i < n; i++) {
         values[i] = rx[i + 1u];
+    }
+    if (first != NULL) {
+        *first = rx[0];
     }
     return INC_OK;
 }

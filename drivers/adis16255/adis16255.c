@@ -192,11 +192,35 @@ static bool uniform(const uint16_t *w, size_t n, uint16_t v)
     return true;
 }
 
+/*
+ * Every register read of this driver: one pipelined sequence whose trailing frame reads
+ * SENS_AVG (adis_read_regs_tail), so the first word of the next read answers it when nothing
+ * else went to the part in between (*chained: dev->spi.transfers is where the last read left
+ * it). first and chained may be NULL.
+ */
+static int rd_regs(struct adis16255 *dev, const uint8_t *addrs, uint16_t *v, size_t n,
+                   uint16_t *first, bool *chained)
+{
+    const bool ch = dev->tail_valid && dev->spi.transfers == dev->tail_mark;
+    const int err = adis_read_regs_tail(&dev->spi, addrs, v, n, ADIS16255_REG_SENS_AVG, first);
+    if (chained != NULL) {
+        *chained = ch;
+    }
+    dev->tail_valid = err == INC_OK;
+    dev->tail_mark = dev->spi.transfers;
+    return err;
+}
+
+static int rd_reg(struct adis16255 *dev, uint8_t addr, uint16_t *v)
+{
+    return rd_regs(dev, &addr, v, 1u, NULL, NULL);
+}
+
 /* Read STATUS into dev->status. INC_ERR_BUS when the word cannot be a STATUS word. */
 static int status_read(struct adis16255 *dev)
 {
     uint16_t v;
-    int err = adis_read_reg(&dev->spi, ADIS16255_REG_STATUS, &v);
+    int err = rd_reg(dev, ADIS16255_REG_STATUS, &v);
     if (err != INC_OK) {
         return err;
     }
@@ -214,7 +238,7 @@ static int status_read(struct adis16255 *dev)
  */
 static int alive(struct adis16255 *dev, uint16_t *last)
 {
-    int err = adis_read_reg(&dev->spi, ADIS16255_REG_SENS_AVG, last);
+    int err = rd_reg(dev, ADIS16255_REG_SENS_AVG, last);
     if (err != INC_OK) {
         return err;
     }
@@ -290,7 +314,7 @@ static int discard_outputs(struct adis16255 *dev)
 {
     static const uint8_t addrs[2] = {ADIS16255_REG_GYRO_OUT, ADIS16255_REG_TEMP_OUT};
     uint16_t w[2];
-    int err = adis_read_regs(&dev->spi, addrs, w, 2u);
+    int err = rd_regs(dev, addrs, w, 2u, NULL, NULL);
     sensor_dr_sync(dev->cfg.hal, &dev->dr); /* drop the edges seen so far */
     return err;
 }
@@ -311,7 +335,7 @@ static int write_config(struct adis16255 *dev)
         err = adis_write_reg(&dev->spi, ADIS16255_REG_MSC_CTRL, dev->msc_ctrl);
     }
     if (err == INC_OK) {
-        err = adis_read_regs(&dev->spi, addrs, v, 3u);
+        err = rd_regs(dev, addrs, v, 3u, NULL, NULL);
     }
     if (err != INC_OK) {
         return err;
@@ -338,7 +362,7 @@ static int identify(struct adis16255 *dev)
     int32_t supply;
     unsigned range;
     struct adis16255_status status;
-    int err = adis_read_regs(&dev->spi, addrs, v, 5u);
+    int err = rd_regs(dev, addrs, v, 5u, NULL, NULL);
     if (err != INC_OK) {
         return err;
     }
@@ -371,7 +395,7 @@ static int identify(struct adis16255 *dev)
         return INC_ERR_ID;
     }
     /* STATUS last, read on its own: reading it clears latched bits (power-up glitches). */
-    err = adis_read_reg(&dev->spi, ADIS16255_REG_STATUS, &v[0]);
+    err = rd_reg(dev, ADIS16255_REG_STATUS, &v[0]);
     if (err != INC_OK) {
         return err;
     }
@@ -430,6 +454,9 @@ int adis16255_init(struct adis16255 *dev, const struct adis16255_cfg *cfg)
     dev->cfg = *cfg;
     dev->smpl_prd = cfg->smpl_prd;
     dev->sens_avg = sens_avg;
+    dev->tail_valid = false;
+    dev->tail_mark = 0u;
+    dev->tail_fails = 0u;
     dev->msc_ctrl = (uint16_t)((cfg->dr_enable ? ADIS16255_MSC_DR_EN : 0u) |
                                (cfg->dr_active_high ? ADIS16255_MSC_DR_POL_HIGH : 0u) |
                                (cfg->dr_line != 0u ? ADIS16255_MSC_DR_LINE : 0u));
@@ -505,6 +532,8 @@ int adis16255_read_sample(struct adis16255 *dev, struct adis16255_sample *s)
 {
     static const uint8_t addrs[2] = {ADIS16255_REG_GYRO_OUT, ADIS16255_REG_TEMP_OUT};
     uint16_t w[2];
+    uint16_t first = 0u;
+    bool chained;
     int32_t rate;
     int err;
     if (s == NULL) {
@@ -515,10 +544,20 @@ int adis16255_read_sample(struct adis16255 *dev, struct adis16255_sample *s)
     if (err != INC_OK) {
         return err;
     }
-    /* One pipelined sequence: 3 frames for 2 registers (adis_read_regs). */
-    err = adis_read_regs(&dev->spi, addrs, w, 2u);
+    /* One pipelined sequence: 3 frames for 2 registers; the first word answers the previous
+     * read's trailing SENS_AVG command (rd_regs). */
+    err = rd_regs(dev, addrs, w, 2u, &first, &chained);
     if (err != INC_OK) {
         return err;
+    }
+    if (chained && first != dev->sens_avg &&
+        !(first == w[0] && first == w[1] && (first == 0x0000u || first == 0xFFFFu))) {
+        /* Not a stuck line (that is the bus-fault classification below): garbage or a part
+         * that lost its configuration. */
+        dev->tail_fails++;
+        s->gyro_word = w[0];
+        s->temp_word = w[1];
+        return INC_ERR_BUSY;
     }
     s->t_ns = now(dev);
     s->gyro_word = w[0];
@@ -617,7 +656,7 @@ static int read_output(struct adis16255 *dev, uint8_t addr, int32_t (*conv)(uint
     *out = 0;
     err = check_ready(dev);
     if (err == INC_OK) {
-        err = adis_read_reg(&dev->spi, addr, &w);
+        err = rd_reg(dev, addr, &w);
     }
     if (err == INC_OK) {
         err = check_outputs(dev, &w, 1u, NULL);
@@ -674,7 +713,7 @@ int adis16255_set_sample_period(struct adis16255 *dev, uint8_t smpl_prd)
         err = use_timing(dev, adis16255_sclk_fast_allowed(smpl_prd));
     }
     if (err == INC_OK) {
-        err = adis_read_reg(&dev->spi, ADIS16255_REG_SMPL_PRD, &v);
+        err = rd_reg(dev, ADIS16255_REG_SMPL_PRD, &v);
     }
     if (err == INC_OK && v != smpl_prd) {
         err = INC_ERR_ID;
@@ -691,7 +730,7 @@ static int write_verified(struct adis16255 *dev, uint8_t addr, uint16_t word)
         err = adis_write_reg(&dev->spi, addr, word);
     }
     if (err == INC_OK) {
-        err = adis_read_reg(&dev->spi, addr, &v);
+        err = rd_reg(dev, addr, &v);
     }
     if (err == INC_OK && v != word) {
         err = INC_ERR_ID;
@@ -747,7 +786,7 @@ int adis16255_get_gyro_offset(struct adis16255 *dev, int32_t *dps_q16)
     if (err != INC_OK) {
         return err;
     }
-    err = adis_read_reg(&dev->spi, ADIS16255_REG_GYRO_OFF, &v);
+    err = rd_reg(dev, ADIS16255_REG_GYRO_OFF, &v);
     if (err != INC_OK) {
         return err;
     }
@@ -804,7 +843,7 @@ int adis16255_factory_restore(struct adis16255 *dev)
     err = command(dev, ADIS16255_CMD_FACTORY_RESTORE,
                   (uint64_t)ADIS16255_FACTORY_RESTORE_MS * NS_PER_MS);
     if (err == INC_OK) {
-        err = adis_read_regs(&dev->spi, addrs, v, 2u);
+        err = rd_regs(dev, addrs, v, 2u, NULL, NULL);
     }
     if (err == INC_OK && (v[0] != 0u || v[1] != ADIS16255_GYRO_SCALE_UNITY)) {
         err = INC_ERR_DEVICE;
@@ -821,14 +860,14 @@ int adis16255_flash_update(struct adis16255 *dev)
     }
     err = wait_idle(dev);
     if (err == INC_OK) {
-        err = adis_read_reg(&dev->spi, ADIS16255_REG_ENDURANCE, &before);
+        err = rd_reg(dev, ADIS16255_REG_ENDURANCE, &before);
     }
     if (err == INC_OK) {
         err = command(dev, ADIS16255_CMD_FLASH_UPDATE,
                       (uint64_t)ADIS16255_FLASH_UPDATE_MS * NS_PER_MS);
     }
     if (err == INC_OK) {
-        err = adis_read_reg(&dev->spi, ADIS16255_REG_ENDURANCE, &after);
+        err = rd_reg(dev, ADIS16255_REG_ENDURANCE, &after);
     }
     if (err == INC_OK) {
         err = status_read(dev);
@@ -902,7 +941,7 @@ int adis16255_self_test(struct adis16255 *dev)
     deadline = now(dev) + (uint64_t)ADIS16255_SELF_TEST_TIMEOUT_MS * NS_PER_MS;
     hal_delay_ms(dev->cfg.hal, ADIS16255_SELF_TEST_MS);
     for (;;) {
-        err = adis_read_reg(&dev->spi, ADIS16255_REG_MSC_CTRL, &v);
+        err = rd_reg(dev, ADIS16255_REG_MSC_CTRL, &v);
         if (err != INC_OK) {
             return err;
         }

@@ -360,6 +360,51 @@ static void test_commands(void)
     CHECK_NO_VIOLATIONS();
 }
 
+/* The chained SENS_AVG word: every register read ends with a SENS_AVG command, and a sample
+ * read refuses its words when the first one (the answer to that command) is not the SENS_AVG
+ * the driver wrote. A busy part's garbage, a part that lost its configuration (a reset: its
+ * range is no longer the one the conversion assumes) are never taken for a sample. */
+static void test_chained_sens_avg(void)
+{
+    struct adis16255_sample s;
+    unsigned i, ok = 0, busy = 0;
+    uint16_t sa;
+    fx_setup(true);
+    fx_input(100.0, 40.0, 5.0);
+    REQUIRE(init_default() == 0);
+    CHECK_OK(adis16255_wait_sample(&fx.drv, 0, &s));
+    CHECK_OK(adis16255_wait_sample(&fx.drv, 0, &s));
+    CHECK_EQ_INT((int)fx.drv.tail_fails, 0);
+    /* Busy for 50 ms (a reason the driver did not cause): the part shifts garbage out and its
+     * data-ready keeps coming; every read is refused, none delivers a value. */
+    sim_adis16255_force_busy(&fx.part, 50000000u);
+    for (i = 0; i < 20u; i++) {
+        fx_wait_ms(2);
+        const int err = adis16255_read_sample(&fx.drv, &s);
+        ok += err == INC_OK ? 1u : 0u;
+        busy += err == INC_ERR_BUSY ? 1u : 0u;
+    }
+    CHECK_EQ_INT((int)ok, 0);
+    CHECK(busy >= 19u); /* the first read after the onset may still be chained to a good word */
+    CHECK(fx.drv.tail_fails >= 19u);
+    /* Free again: the next read re-establishes the chain, then samples flow (the first
+     * waits may find the outputs stale: the part restarts sampling). */
+    fx_wait_ms(20);
+    for (i = 0; i < 5u && adis16255_wait_sample(&fx.drv, 0, &s) != INC_OK; i++) {
+    }
+    CHECK(i < 5u);
+    CHECK(s.valid);
+    /* The part's SENS_AVG changed behind the driver's back (a reset to the ±80 deg/s range):
+     * refused at the next read. */
+    sa = sim_adis16255_peek(&fx.part, ADIS16255_REG_SENS_AVG);
+    sim_adis16255_poke(&fx.part, ADIS16255_REG_SENS_AVG, (uint16_t)((sa & 0x00FFu) | 0x0100u));
+    fx_wait_ms(5);
+    (void)adis16255_read_sample(&fx.drv, &s); /* answers the last good read's command */
+    fx_wait_ms(5);
+    CHECK_ERR(adis16255_read_sample(&fx.drv, &s), INC_ERR_BUSY);
+    CHECK(!s.valid);
+}
+
 static void test_command_while_busy(void)
 {
     uint16_t e0;
@@ -687,6 +732,7 @@ int main(void)
     UNIT_RUN(test_ea_status);
     UNIT_RUN(test_spi_framing_error);
     UNIT_RUN(test_commands);
+    UNIT_RUN(test_chained_sens_avg);
     UNIT_RUN(test_command_while_busy);
     UNIT_RUN(test_self_test);
     UNIT_RUN(test_data_ready);

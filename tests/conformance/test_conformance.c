@@ -586,17 +586,19 @@ static const struct row matrix[] = {
     {SIM_FAULT_MISO_STUCK_HIGH, true, {E(INC_ERR_BUS), E(INC_ERR_BUS), E(INC_ERR_BUS)}},
     {SIM_FAULT_MISO_STUCK_LOW, true, {E(INC_ERR_BUS), E(INC_ERR_BUS), E(INC_ERR_BUS)}},
     {SIM_FAULT_WRONG_ID, true, {E(INC_ERR_ID), E(INC_ERR_ID), E(INC_ERR_ID)}},
-    /* ADIS16255: the busy part answers garbage and its data-ready keeps coming; the driver
-     * reads on and takes the garbage for samples (docs/sim.md, known deviations). */
+    /* ADIS16255: the busy part answers garbage and its data-ready keeps coming; the driver's
+     * chained SENS_AVG word (the first word of each read answers the previous read's trailing
+     * SENS_AVG command) tells garbage from samples: INC_ERR_BUSY (docs/drivers-adis16255.md). */
     {SIM_FAULT_BUSY,
      false,
-     {K(INC_ERR_BUSY, INC_ERR_TIMEOUT, INC_ERR_STALE, true), E2(INC_ERR_BUSY, INC_ERR_TIMEOUT),
-      E(NA)}},
+     {E2(INC_ERR_BUSY, INC_ERR_TIMEOUT), E2(INC_ERR_BUSY, INC_ERR_TIMEOUT), E(NA)}},
     {SIM_FAULT_NO_DATA_READY, false, {E(INC_ERR_TIMEOUT), E(INC_ERR_TIMEOUT), E(INC_ERR_TIMEOUT)}},
-    /* The ADIS protocol has no check word: a flipped data bit is a plausible value. */
+    /* The ADIS protocol has no check word: a flipped data bit is a plausible value. The
+     * ADIS16255's chained SENS_AVG word is corrupted with the rest (every word XOR 0x0101):
+     * the read is refused as garbage (INC_ERR_BUSY); the ADIS IMU burst has no such word. */
     {SIM_FAULT_CORRUPT_FRAME,
      false,
-     {K(INC_ERR_BUS, INC_ERR_CRC, INC_OK, true), K(INC_ERR_BUS, INC_ERR_CRC, INC_OK, true),
+     {E2(INC_ERR_BUSY, INC_ERR_BUS), K(INC_ERR_BUS, INC_ERR_CRC, INC_OK, true),
       E2(INC_ERR_BUS, INC_ERR_CRC)}},
     {SIM_FAULT_DEVICE_ERROR, false, {E(INC_ERR_DEVICE), E(INC_ERR_DEVICE), E(INC_ERR_DEVICE)}},
     /* Value faults: one sample cannot show them to a driver (a plausibility check above the

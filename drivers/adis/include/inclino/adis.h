@@ -45,6 +45,19 @@ int adis_read_reg(struct spi_dev *dev, uint8_t addr, uint16_t *value);
  */
 int adis_read_regs(struct spi_dev *dev, const uint8_t *addrs, uint16_t *values, size_t n);
 
+/*
+ * adis_read_regs with the trailing frame's command chosen: it reads register tail_addr (its
+ * value arrives in the first frame of the next sequence to the part), and *first (may be NULL)
+ * receives this sequence's first MISO word: the answer to the previous sequence's trailing
+ * command when nothing else went to the part in between. A driver that always ends its sample
+ * read with the same register learns from *first, at no bus cost, whether the part still
+ * answers that register as expected (a busy part answers garbage, a reset one its defaults).
+ * adis_read_regs(dev, addrs, values, n) is adis_read_regs_tail(dev, addrs, values, n, 0, NULL).
+ * Errors as adis_read_regs; INC_ERR_INVAL also for tail_addr > ADIS_ADDR_MAX.
+ */
+int adis_read_regs_tail(struct spi_dev *dev, const uint8_t *addrs, uint16_t *values, size_t n,
+                        uint8_t tail_addr, uint16_t *first);
+
 /* Write one byte (1 frame). */
 int adis_write_byte(struct spi_dev *dev, uint8_t addr, uint8_t value);
 

@@ -206,6 +206,11 @@ struct adis16255 {
     struct adis16255_status status;   /* the last STATUS read (EA, self-test, init) */
     uint32_t bus_errors;              /* calls that ended in INC_ERR_BUS */
     uint32_t sensor_missed;           /* sensor ops: samples lost since the last one handed out */
+    /* the chained SENS_AVG check of adis16255_read_sample: tail_mark is spi.transfers after the
+     * last sample read, whose trailing frame read SENS_AVG; tail_fails counts mismatches */
+    bool tail_valid;
+    uint32_t tail_mark;
+    uint32_t tail_fails;
 };
 
 /* ------------------------------------------------------------------ pure functions */
@@ -287,8 +292,15 @@ const char *adis16255_status_bit_name(unsigned bit);
 int adis16255_init(struct adis16255 *dev, const struct adis16255_cfg *cfg);
 
 /*
- * Read GYRO_OUT and TEMP_OUT in one pipelined sequence (3 frames). 0 and s->valid = true when
+ * Read GYRO_OUT and TEMP_OUT in one pipelined sequence (3 frames; the third reads SENS_AVG,
+ * whose value arrives as the first word of the next sample read). 0 and s->valid = true when
  * both are new and error-free. Otherwise s->valid = false, rate/temp = 0, raw words kept:
+ *   INC_ERR_BUSY   the first word of this read, the answer to the previous sample read's
+ *                  trailing SENS_AVG command (checked when nothing else went to the part in
+ *                  between), is not the SENS_AVG the driver wrote: the part answered garbage
+ *                  (busy: it gives no busy flag) or lost its configuration (a reset: its range
+ *                  and filter may no longer be the ones the conversion assumes); the sample is
+ *                  not used and dev->tail_fails counts it;
  *   INC_ERR_BUS    an all-ones word with a STATUS that is not one (reserved bits), or
  *                  all-zero stale words and SENS_AVG does not read back (MISO stuck/no device);
  *   INC_ERR_DEVICE EA set: STATUS read and decoded into s->status and dev->status;
