@@ -160,7 +160,7 @@ void epb_image_run(const struct hal *hal)
 void epb_image_run_on(const struct epb_image_board *board)
 {
     const struct hal *hal = board->hal;
-    /* Static, not on the stack: the M0+ image has 1 KiB of stack (docs/build.md). */
+    /* Static, not on the stack: the M0+ image has 1.5 KiB of stack (docs/build.md). */
     static struct app_cfg cfg;
     static struct app_result r;
     /* [ADI-EPB]'s budget and the default stillness thresholds at the ADIS default 819.2 SPS. */

@@ -265,6 +265,8 @@ def main():
             lines.append(f"  {name:<20} {d[0]:>6} bytes: "
                          + " > ".join(funcs[x]["name"] for x in d[1]))
         r2 = next((d for n, d in res if n in ("Reset_Handler", "_start")), None)
+        if r2 is None:  # an assembly entry (rv32 _start) has no stack information: from main
+            r2 = next((d for n, d in res if n == "main"), None)
         if r2 is not None:
             frame = 0
             if args.target.startswith("cortex-m"):

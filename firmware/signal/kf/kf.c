@@ -27,7 +27,7 @@
 /* ---- helpers ------------------------------------------------------------------------------ */
 
 /* Keeps a helper out of line so that its 128-bit temporaries live in its own short frame instead
- * of adding to the caller's (gcc merges inlined frames; Cortex-M0+ images have 1 KiB of stack).
+ * of adding to the caller's (gcc merges inlined frames; Cortex-M0+ images have 1.5 KiB of stack).
  * Only an optimisation hint: without GCC-compatible attributes it expands to nothing. */
 #if defined(__GNUC__)
 #define KF_NOINLINE __attribute__((noinline))

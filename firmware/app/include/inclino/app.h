@@ -229,7 +229,7 @@ struct app {
     uint32_t n, missed, errors, motion_start, flags;
     uint64_t var_max;            /* largest window variance on the slope axes, Q16 g^2 */
     struct cal_avg eol_a, eol_g; /* app_eol_face's sums (here, not on the stack: the M0+ image
-                                    has 1 KiB of stack) */
+                                    has 1.5 KiB of stack) */
     bool ready;
 };
 
