@@ -89,8 +89,8 @@ static const struct spi_bus_ops *bus_orig;
 static const struct hal_ops *hal_orig;
 static struct spi_bus_ops bus_wrap;
 static struct hal_ops hal_wrap;
-static uint64_t xfer_t, now_t;     /* ticks inside, models' ticks taken out */
-static uint32_t xfer_p, now_p;     /* meter pairs inside */
+static uint64_t xfer_t, now_t; /* ticks inside, models' ticks taken out */
+static uint32_t xfer_p, now_p; /* meter pairs inside */
 static uint32_t xfer_n, now_n;
 
 static int w_transfer(void *ctx, struct spi_dev *dev, const uint16_t *tx, uint16_t *rx, size_t n,
@@ -274,15 +274,14 @@ static int run(const char *name, bool lpspi, bool sleep, enum wrap wrap)
                instr(read_t / SAMPLES) - p * (instr(acc) - 2.0));
         if (wrap == WRAP_XFER) {
             printf("CPU engine=%s transfers=%.2f transfer_instr=%.0f\n", name,
-                   (double)xfer_n / SAMPLES,
-                   instr(((double)xfer_t - xfer_p * ovh) / SAMPLES));
+                   (double)xfer_n / SAMPLES, instr(((double)xfer_t - xfer_p * ovh) / SAMPLES));
         } else if (wrap == WRAP_SENSOR) {
             printf("CPU engine=%s wait_ready_instr=%.0f read_op_instr=%.0f\n", name,
                    instr(((double)wait_t - wait_p * ovh) / SAMPLES),
                    instr(((double)rd_t - rd_p * ovh) / SAMPLES));
         } else if (wrap == WRAP_NOW) {
-            printf("CPU engine=%s now_calls=%.2f now_instr=%.0f\n", name,
-                   (double)now_n / SAMPLES, instr(((double)now_t - now_p * ovh) / SAMPLES));
+            printf("CPU engine=%s now_calls=%.2f now_instr=%.0f\n", name, (double)now_n / SAMPLES,
+                   instr(((double)now_t - now_p * ovh) / SAMPLES));
         }
     }
     return 0;

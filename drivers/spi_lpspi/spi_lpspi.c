@@ -184,15 +184,14 @@ static int lp_transfer(void *ctx, struct spi_dev *dev, const uint16_t *tx, uint1
             return err; /* nothing reached the bus */
         }
         /* One word on the wire, generously: setup, bits, hold and the gap or stall after it. */
-        n_counts = (uint32_t)c.pcssck + 1u + bits * ((uint32_t)c.sckdiv + 2u) +
-                   (uint32_t)c.sckpcs + 1u + (uint32_t)c.dbt + 2u;
+        n_counts = (uint32_t)c.pcssck + 1u + bits * ((uint32_t)c.sckdiv + 2u) + (uint32_t)c.sckpcs +
+                   1u + (uint32_t)c.dbt + 2u;
         lp->ck = c;
         lp->ck_t = *t;
         lp->ck_cs = (uint8_t)cs;
         lp->ck_bits = (uint8_t)bits;
         lp->ck_word_ns = spi_lpspi_counts_ns(lp->cfg.fclk_hz, c.prescale, n_counts);
-        lp->ck_hold_ns =
-            spi_lpspi_counts_ns(lp->cfg.fclk_hz, c.prescale, (uint32_t)c.sckpcs + 1u);
+        lp->ck_hold_ns = spi_lpspi_counts_ns(lp->cfg.fclk_hz, c.prescale, (uint32_t)c.sckpcs + 1u);
         lp->ck_settle_ns = spi_lpspi_counts_ns(lp->cfg.fclk_hz, c.prescale,
                                                ((uint32_t)c.sckdiv + 3u) / 2u);
         lp->ck_valid = true;

@@ -104,7 +104,7 @@ static void test_pins(void)
         CHECK_OK(sim_s32k_lpspi_init(&lpspi, &lc));
         CHECK_OK(s32k_board_init(&board, &s32k_board_s32k144evb, S32K_BOARD_SPI_LPSPI, true));
         CHECK(board.spi == &board.lp.bus);
-        CHECK(board.lp.cfg.irq_wait);                           /* sleeps on its interrupt */
+        CHECK(board.lp.cfg.irq_wait); /* sleeps on its interrupt */
         CHECK((core.enabled[S32K1_IRQ_LPSPI0 / 32u] & (1u << (S32K1_IRQ_LPSPI0 % 32u))) != 0u);
         CHECK_EQ_INT(board.lp.fifo_words, 4);
         CHECK_EQ_INT(lpspi.locked_writes, 0);

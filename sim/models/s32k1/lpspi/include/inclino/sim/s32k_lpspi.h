@@ -96,7 +96,7 @@ struct sim_s32k_lpspi {
     bool force_tef, force_ref, stall_engine;
     /* statistics */
     uint32_t frames, words, locked_writes, bad_commands;
-    uint32_t irqs; /* times the interrupt was raised */
+    uint32_t irqs;                          /* times the interrupt was raised */
     uint64_t t_first_assert, t_last_negate; /* bus time: first PCS fall, latest PCS rise */
 };
 
