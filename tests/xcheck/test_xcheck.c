@@ -175,33 +175,34 @@ static void test_mon(void)
         fx_q16_t lev = 0;
         CHECK_OK(xcheck_mon_init(&m, (uint8_t)sh, 1u));
         (void)xcheck_mon_step(&m, z, 7u, INT32_MAX, NULL);
-        for (k = 0; k < 16u * (1u << sh) + 64u; k++)
+        for (k = 0; k < 32u * (1u << sh) + 64u; k++)
             lev = xcheck_mon_step(&m, d, 1u, INT32_MAX, NULL);
-        CHECK(fabs(m.lp[0] - d[0] * 256.0) <= (double)(1u << (sh - 1u)));
-        CHECK(fabs(lev - (double)d[0]) <= (double)(1u << (sh - 1u)) / 256.0 + 0.5);
-        CHECK(fabs(m.lp[2] - d[2] * 256.0) <= (double)(1u << (sh - 1u)));
-        CHECK(fabs(m.lp[1] / 16777216.0 + 3.0) * 16777216.0 <= (double)(1u << (sh - 1u)));
+        CHECK(fabs(m.lp[0] - d[0] * 256.0) <= (double)(1u << sh));
+        CHECK(fabs(lev - (double)d[0]) <= (double)(1u << sh) / 256.0 + 0.5);
+        CHECK(fabs(m.lp[2] - d[2] * 256.0) <= (double)(1u << sh));
+        CHECK(fabs(m.lp[1] / 16777216.0 + 3.0) * 16777216.0 <= (double)(1u << sh));
         lev = xcheck_mon_step(&m, d, 7u, INT32_MAX, NULL);
-        CHECK(abs(lev - FX_Q16_INT(3)) <= (int)(1u << (sh - 1u)) / 256 + 1);
+        CHECK(abs(lev - FX_Q16_INT(3)) <= (int)(1u << sh) / 256 + 1);
     }
-    /* seeding: the first sample is taken as it is; the clamp at 32 g */
+    /* the start from 0, the clamp at 32 g, the persistence count (shift 1: lp halves the gap) */
     {
-        const fx_q16_t d[3] = {FX_Q16_INT(100), -FX_Q16_INT(100), 7};
-        CHECK_OK(xcheck_mon_init(&m, 8u, 3u));
-        CHECK_EQ_INT(xcheck_mon_step(&m, d, 7u, 0, &fail), FX_Q16_INT(32));
+        const fx_q16_t d[3] = {FX_Q16_INT(100), -FX_Q16_INT(100), 1 << 10};
+        CHECK_OK(xcheck_mon_init(&m, 1u, 3u));
+        /* stage 1: 1/2, 3/4, 7/8, 15/16; stage 2: 1/4, 1/2, 11/16, 13/16 of the input */
+        CHECK_EQ_INT(xcheck_mon_step(&m, d, 7u, 0, &fail), FX_Q16_INT(8)); /* 32 g / 4 */
         CHECK(!fail);
-        CHECK_EQ_INT(xcheck_mon_step(&m, d, 4u, 0, &fail), 7);
+        CHECK_EQ_INT(xcheck_mon_step(&m, d, 4u, 0, &fail), 512);
         CHECK(!fail);
-        CHECK_EQ_INT(xcheck_mon_step(&m, d, 4u, 6, &fail), 7); /* the 3rd over 6 */
+        CHECK_EQ_INT(xcheck_mon_step(&m, d, 4u, 703, &fail), 704); /* the 3rd over */
         CHECK(fail);
-        CHECK_EQ_INT(xcheck_mon_step(&m, d, 4u, 7, &fail), 7); /* not above: count restarts */
+        CHECK_EQ_INT(xcheck_mon_step(&m, d, 4u, 832, &fail), 832); /* not above: restarts */
         CHECK(!fail);
-        (void)xcheck_mon_step(&m, d, 4u, 6, &fail);
+        (void)xcheck_mon_step(&m, d, 4u, 0, &fail);
         CHECK(!fail);
         xcheck_mon_reset(&m);
-        CHECK(!m.seeded && m.over_n == 0u);
+        CHECK(m.over_n == 0u && m.lp[0] == 0 && m.lp1[2] == 0);
     }
-    /* noise: the low-pass's sigma is sigma sqrt(g / (2 - g)) (g = 2^-8: 0.0442 sigma) */
+    /* noise: the output's sigma is sigma sqrt(g (2 - 2g + g^2) / (2 - g)^3) (g = 2^-8: 0.031) */
     {
         const unsigned n = UNIT_SIZE(400000u, 40000u);
         double s2 = 0.0, s1 = 0.0;
@@ -224,7 +225,8 @@ static void test_mon(void)
         {
             const double cnt = (double)(n - 4096u), mean = s1 / cnt;
             const double sd = sqrt(s2 / cnt - mean * mean);
-            const double want = 0.01 * sqrt((1.0 / 256.0) / (2.0 - 1.0 / 256.0));
+            const double g = 1.0 / 256.0;
+            const double want = 0.01 * sqrt(g * (2.0 - 2.0 * g + g * g) / pow(2.0 - g, 3.0));
             printf("  monitor: low-pass sigma %.3g g (expected %.3g)\n", sd, want);
             CHECK(fabs(sd / want - 1.0) < (UNIT_REDUCED ? 0.25 : 0.1));
         }

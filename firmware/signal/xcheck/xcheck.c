@@ -109,8 +109,8 @@ void xcheck_mon_reset(struct xcheck_mon *m)
 {
     if (m == NULL) return;
     m->lp[0] = m->lp[1] = m->lp[2] = 0;
+    m->lp1[0] = m->lp1[1] = m->lp1[2] = 0;
     m->over_n = 0u;
-    m->seeded = false;
 }
 
 fx_q16_t xcheck_mon_step(struct xcheck_mon *m, const fx_q16_t d[3], uint8_t axes, fx_q16_t thr_g,
@@ -121,19 +121,16 @@ fx_q16_t xcheck_mon_step(struct xcheck_mon *m, const fx_q16_t d[3], uint8_t axes
     if (fail != NULL) *fail = false;
     if (m == NULL || d == NULL) return 0;
     for (i = 0; i < 3u; i++) {
-        /* d clamped to +-32 g: Q24 within +-2^29, lp within +-2^29, the difference +-2^30 */
+        /* d clamped to +-32 g: Q24 within +-2^29, lp1 and lp within +-2^29 (averages of it), the
+         * differences within +-2^30 */
         const int32_t x = clamp32(d[i], XC_G32_Q16) * 256;
-        if (!m->seeded) {
-            m->lp[i] = x;
-        } else {
-            m->lp[i] += (int32_t)rnd64((int64_t)x - m->lp[i], m->sh);
-        }
+        m->lp1[i] += (int32_t)rnd64((int64_t)x - m->lp1[i], m->sh);
+        m->lp[i] += (int32_t)rnd64((int64_t)m->lp1[i] - m->lp[i], m->sh);
         if ((axes & (1u << i)) != 0u) {
             const int32_t l = (int32_t)rnd64(abs32(m->lp[i]), 8);
             if (l > level) level = l;
         }
     }
-    m->seeded = true;
     if (level > thr_g) {
         if (m->over_n < m->persist_n) m->over_n++;
     } else {

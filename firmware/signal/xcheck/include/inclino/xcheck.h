@@ -15,7 +15,8 @@
  *      estimate's own error (at most its bound, in g: sin(bound)), the lever's acceleration and
  *      road vibration remain; an accelerometer bias, a stuck or drifting axis, or a gyro error
  *      that tilted the estimate shows up in it.
- *   3. xcheck_mon: a residual monitor: first-order low-pass of a 3-axis residual, the largest
+ *   3. xcheck_mon: a residual monitor: second-order low-pass (two equal first-order stages) of
+ *      a 3-axis residual, the largest
  *      |component| of the selected axes against a threshold, a persistence count. The vehicle
  *      check feeds it r (axes x, y); the two-sensor cross-check feeds it the difference of two
  *      calibrated accelerations (same quantity).
@@ -80,29 +81,34 @@ int xcheck_kin_residual(const fx_q16_t acc_g[3], const int32_t up_q30[3], fx_q16
                         fx_q16_t rate_hz, fx_q16_t speed_mps, fx_q16_t yaw_dps, fx_q16_t r[3]);
 
 struct xcheck_mon {
-    int32_t lp[3]; /* Q24 g, low-passed residual, |.| <= 32 g */
+    int32_t lp1[3]; /* Q24 g, the first stage, |.| <= 32 g */
+    int32_t lp[3];  /* Q24 g, the low-passed residual (second stage), |.| <= 32 g */
     uint32_t over_n, persist_n;
     uint8_t sh;
-    bool seeded;
 };
 
-/* shift in [1, 16]: the low-pass gain 2^-shift per sample (time constant 2^shift samples);
+/* shift in [1, 16]: each stage's gain 2^-shift per sample (time constant 2^shift samples each,
+ * group delay 2^(shift+1) samples);
  * persist_n in [1, 2^24]: consecutive samples above the threshold that make a failure.
  * INC_ERR_NULL, INC_ERR_INVAL. */
 int xcheck_mon_init(struct xcheck_mon *m, uint8_t shift, uint32_t persist_n);
 
-/* Start again (the next residual seeds the low-pass). Nothing for NULL. */
+/* Start again (the low-pass from 0, no count). Nothing for NULL. */
 void xcheck_mon_reset(struct xcheck_mon *m);
 
 /*
- * One sample: d (Q16 g, each component clamped to +-32 g) into the low-pass
- * lp <- lp + round((d x 2^8 - lp) / 2^shift) (Q24; the first sample after init/reset seeds
- * lp = d), level = max |lp_i| over the axes of the mask (bits 0..2), rounded to Q16. *fail (when
- * not NULL) is true once level > thr_g (Q16 g) has held for persist_n consecutive samples.
+ * One sample: d (Q16 g, each component clamped to +-32 g) into the two stages
+ * lp1 <- lp1 + round((d x 2^8 - lp1) / 2^shift), lp <- lp + round((lp1 - lp) / 2^shift) (Q24;
+ * both start at 0 after init/reset: a residual that comes in steps, such as a speed change held
+ * between its frames, is not taken for its first value; the second stage takes the ripple of
+ * such steps down by another factor of about 2^shift / (steps' period)), level = max |lp_i|
+ * over the axes of the mask (bits 0..2), rounded to Q16. *fail (when not NULL) is true once
+ * level > thr_g (Q16 g) has held for persist_n consecutive samples.
  * Returns level (Q16 g, [0, 32 g]); 0 for NULL m or d.
- * Accuracy: a constant input is reached to within 2^(shift-1) LSB Q24 (<= 2^-9 g at shift 16,
- * 7.6e-6 g at shift 8); the output rounding adds 0.5 LSB Q16; for white noise of sigma per sample
- * the low-pass's sigma is sigma sqrt(g/(2-g)) with g = 2^-shift (0.044 sigma at shift 8).
+ * Accuracy: a constant input is reached to within 2^(shift-1) LSB Q24 per stage (2^shift LSB
+ * Q24 in all: <= 2^-8 g at shift 16, 1.5e-5 g at shift 8); the output rounding adds 0.5 LSB Q16;
+ * for white noise of sigma per sample the output's sigma is sigma sqrt(g (2 - 2g + g^2) / (2 -
+ * g)^3) with g = 2^-shift (0.031 sigma at shift 8).
  */
 fx_q16_t xcheck_mon_step(struct xcheck_mon *m, const fx_q16_t d[3], uint8_t axes, fx_q16_t thr_g,
                          bool *fail);
