@@ -174,14 +174,16 @@ static void update_mode(struct app_esc *e, struct app *a, const struct app_vehic
 #define DEG2RAD_Q16_UP 1144
 
 /* The driving diagnostics of one sample (after att_update and the mode): see app_esc.h. */
-static void diag_step(struct app_esc *e, const struct att_sample *as, const struct app_vehicle *veh)
+static void diag_step(struct app_esc *e, const struct sensor_sample *raw,
+                      const struct att_sample *as, const struct app_vehicle *veh)
 {
     const bool have_speed = veh != NULL && veh->valid;
     const bool acc_sat = (as->sat & ATT_SAT_ACC_MASK) != 0u;
     bool fail = false;
-    if (e->cfg.flat_n != 0u) {
-        const int32_t v[XCHECK_FLAT_CH] = {as->gyro_dps[0], as->gyro_dps[1], as->gyro_dps[2],
-                                           as->acc_g[0],    as->acc_g[1],    as->acc_g[2]};
+    if (e->cfg.flat_n != 0u && raw != NULL) {
+        /* the driver's values, before the record's temperature models can move them */
+        const int32_t v[XCHECK_FLAT_CH] = {raw->gyro_dps[0], raw->gyro_dps[1], raw->gyro_dps[2],
+                                           raw->accel_g[0],  raw->accel_g[1],  raw->accel_g[2]};
         if (xcheck_flat_step(&e->flat, v) != 0u) e->diag |= APP_ESC_D_FLAT;
     }
     e->veh_level = e->veh_thr = 0;
@@ -259,7 +261,7 @@ int app_esc_step(struct app_esc *e, struct app *a, const struct sensor_sample *s
     err = att_update(&e->att, &as);
     if (err != INC_OK && err != INC_ERR_RANGE) return err;
     update_mode(e, a, veh);
-    diag_step(e, &as, veh);
+    diag_step(e, s, &as, veh);
     out->diag = e->diag;
     out->veh_level_g = e->veh_level;
     out->veh_thr_g = e->veh_thr;

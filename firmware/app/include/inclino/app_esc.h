@@ -65,8 +65,8 @@ struct app_esc_cfg {
      * latched until app_esc_init, and every DRIVING output after it is not valid. The attitude
      * itself (att) is never touched. app_esc_cfg_default leaves them off (0);
      * app_esc_diag_default sets the values in brackets. */
-    uint32_t flat_n;       /* flat line: a gyro or accelerometer channel of the calibrated sample
-                              equal for flat_n consecutive samples (a MEMS output always shows
+    uint32_t flat_n;       /* flat line: a gyro or accelerometer channel of the driver's sample
+                              (before calibration) equal for flat_n consecutive samples (a MEMS output always shows
                               its noise: ADIS16405 3 LSB rms accel, 20 LSB gyro). 0: off, else
                               [2, 65535] [16: P(false) < 1e-15 per channel-sample at 3 LSB] */
     fx_q16_t veh_margin_g; /* vehicle-level check: fails when the low-passed residual
