@@ -47,8 +47,8 @@ int app_esc_diag_default(struct app_esc_cfg *cfg)
     cfg->veh_bound_k = FX_Q16_HALF;
     cfg->veh_dyn_k = (fx_q16_t)((FX_Q16_ONE * 3 + 5) / 10);
     cfg->veh_min_mps = FX_Q16_INT(3);
-    cfg->xchk_thr_g = (fx_q16_t)((FX_Q16_ONE * 3 + 50) / 100);   /* 0.03 g */
-    n = (fs + 10u) / 20u;                                        /* 0.05 s */
+    cfg->xchk_thr_g = (fx_q16_t)((FX_Q16_ONE * 3 + 50) / 100); /* 0.03 g */
+    n = (fs + 10u) / 20u;                                      /* 0.05 s */
     cfg->diag_persist_n = n < 2u ? 2u : n;
     n = (fs * 5u + 8u) / 16u; /* 0.3125 s: the nearest power of two, geometrically */
     while (sh < 16u && (uint64_t)n * n >= ((uint64_t)1 << (2u * sh + 1u)))
@@ -199,17 +199,18 @@ static void diag_step(struct app_esc *e, const struct sensor_sample *raw,
              * residual clamps): the difference fits */
             const fx_q16_t dv = fx_sub(veh->speed_mps, e->v_prev);
             att_get_up(&e->att, up);
-            (void)xcheck_kin_residual(as->acc_g, up, dv, e->cfg.att.sample_rate_hz,
-                                      veh->speed_mps, veh->yaw_rate_dps, r);
+            (void)xcheck_kin_residual(as->acc_g, up, dv, e->cfg.att.sample_rate_hz, veh->speed_mps,
+                                      veh->yaw_rate_dps, r);
             /* -k alone: a and up 0 */
-            (void)xcheck_kin_residual(zero3, zero_up, dv, e->cfg.att.sample_rate_hz,
-                                      veh->speed_mps, veh->yaw_rate_dps, kin);
+            (void)xcheck_kin_residual(zero3, zero_up, dv, e->cfg.att.sample_rate_hz, veh->speed_mps,
+                                      veh->yaw_rate_dps, kin);
             klev = xcheck_mon_step(&e->kmon, kin, 1u, INT32_MAX, NULL); /* dv/dt only */
             /* bound <= 180 deg (2^23.5 Q16) x 1144 / 2^16 <= 3.15 g; klev <= 32 g; each
              * product with a Q16 factor <= 1 and their sum (+ margin <= 1 g) fit */
             thr = e->cfg.veh_margin_g +
                   (fx_q16_t)(((int64_t)bound * DEG2RAD_Q16_UP * e->cfg.veh_bound_k +
-                              ((int64_t)1 << 31)) >> 32) +
+                              ((int64_t)1 << 31)) >>
+                             32) +
                   (fx_q16_t)(((int64_t)klev * e->cfg.veh_dyn_k + 32768) >> 16);
             e->veh_level = xcheck_mon_step(&e->vmon, r, 3u, thr, &fail);
             e->veh_thr = thr;

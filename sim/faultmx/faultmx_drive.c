@@ -20,9 +20,9 @@
 #define IMU_RANGE 18.0
 
 static const char *const names[FMXD_FAULTS] = {
-    "none",       "stuck_acc",  "stuck_gyro",  "frozen",       "bias_acc",     "bias_gyro",
-    "noise_burst", "saturation", "drift_acc",  "drift_gyro",   "speed_lost",   "speed_frozen",
-    "speed_stuck", "aux_bias",   "read_error"};
+    "none",       "stuck_acc",    "stuck_gyro",  "frozen",    "bias_acc",
+    "bias_gyro",  "noise_burst",  "saturation",  "drift_acc", "drift_gyro",
+    "speed_lost", "speed_frozen", "speed_stuck", "aux_bias",  "read_error"};
 
 const char *fmxd_fault_name(enum fmxd_fault f)
 {
@@ -262,8 +262,11 @@ int fmxd_run(const struct fmxd_setup *s, const struct fmxd_case *c, struct fmxd_
             const double thr = o.veh_thr_g / 65536.0;
             const double ratio = thr > 0.0 ? o.veh_level_g / 65536.0 / thr : 0.0;
             if (ratio > out->max_veh_ratio) out->max_veh_ratio = ratio;
-            if (o.xchk_level_g / 65536.0 > out->max_xchk_g) out->max_xchk_g = o.xchk_level_g / 65536.0;
-            if (!on) out->false_diag |= (uint8_t)(o.diag & (APP_ESC_D_FLAT | APP_ESC_D_VEH | APP_ESC_D_XCHK));
+            if (o.xchk_level_g / 65536.0 > out->max_xchk_g)
+                out->max_xchk_g = o.xchk_level_g / 65536.0;
+            if (!on)
+                out->false_diag |= (uint8_t)(o.diag &
+                                             (APP_ESC_D_FLAT | APP_ESC_D_VEH | APP_ESC_D_XCHK));
         }
         if (!have || o.mode != APP_MODE_DRIVING) continue;
         if (!on) {
@@ -283,7 +286,8 @@ int fmxd_run(const struct fmxd_setup *s, const struct fmxd_case *c, struct fmxd_
                     out->max_err_deg = e;
                     out->bound_deg = b;
                 }
-            } else if (!out->detected && c->fault != FMXD_NONE && (o.diag != 0u || o.att_fault != 0u)) {
+            } else if (!out->detected && c->fault != FMXD_NONE &&
+                       (o.diag != 0u || o.att_fault != 0u)) {
                 out->detected = true;
                 out->latency = (uint32_t)(n - 1u - onset_n);
             }

@@ -235,9 +235,10 @@ static void drive_case(int fault, uint8_t want)
         /* 8 s parked, then driving at 15 m/s rolling 4 +- 10 deg at 0.2 Hz; the fault at 16 s */
         const double t = i / 819.2, td = t < 8.0 ? 0.0 : t - 8.0;
         const double roll = 4.0 + 10.0 * sin(2 * 3.14159265358979 * 0.2 * td);
-        const double w[3] = {
-            t < 8.0 ? 0.0 : 10.0 * 2 * 3.14159265358979 * 0.2 * cos(2 * 3.14159265358979 * 0.2 * td),
-            0, 0};
+        const double w[3] = {t < 8.0 ? 0.0
+                                     : 10.0 * 2 * 3.14159265358979 * 0.2 *
+                                           cos(2 * 3.14159265358979 * 0.2 * td),
+                             0, 0};
         const bool on = t >= 16.0;
         veh.speed_mps = t < 8.0 ? 0 : FX_Q16_INT(15);
         fx_q16_t aux[3];

@@ -148,8 +148,8 @@ static void test_kin_residual(void)
             const double l1 = 2.0 + 3e-7 * fabs(ky) * 65536.0;
             if (e0 > l0 || e1 > l1 || e2 > 2.0) {
                 CHECK(e0 <= l0 && e1 <= l1 && e2 <= 2.0);
-                printf("  case %u: dv %g rate %g v %g yaw %g errs %g %g %g\n", i, dv, rate, v,
-                       yaw, e0, e1, e2);
+                printf("  case %u: dv %g rate %g v %g yaw %g errs %g %g %g\n", i, dv, rate, v, yaw,
+                       e0, e1, e2);
                 return;
             }
             if (!big) {

@@ -200,7 +200,7 @@ struct DScen {
     double onset_s; // the car is driving at the onset (docs/safety.md)
 };
 
-const DScen kScen[] = {{"braking", 16.0},     {"cornering", 20.0},   {"rough_road", 20.0},
+const DScen kScen[] = {{"braking", 16.0},      {"cornering", 20.0},   {"rough_road", 20.0},
                        {"acceleration", 10.0}, {"lane_change", 20.0}, {"banked_slope", 20.0},
                        {"speed_bumps", 12.0},  {"parking", 12.0}};
 
@@ -229,17 +229,17 @@ std::vector<fmxd_case> dmatrix(bool full)
             for (double b : full ? std::vector<double>{0.02, 0.05, -0.05, 0.1}
                                  : std::vector<double>{0.05, -0.05})
                 dadd(v, sc, FMXD_BIAS_ACC, b, a);
-            for (double b : full ? std::vector<double>{0.5, 1.0, 2.0, -2.0}
-                                 : std::vector<double>{2.0})
+            for (double b :
+                 full ? std::vector<double>{0.5, 1.0, 2.0, -2.0} : std::vector<double>{2.0})
                 dadd(v, sc, FMXD_BIAS_GYRO, b, 1u - a);
             dadd(v, sc, FMXD_SATURATION, 0.0, a);
-            for (double d : full ? std::vector<double>{0.001, 0.005, -0.005}
-                                 : std::vector<double>{0.005})
+            for (double d :
+                 full ? std::vector<double>{0.001, 0.005, -0.005} : std::vector<double>{0.005})
                 dadd(v, sc, FMXD_DRIFT_ACC, d, a);
             for (double d : full ? std::vector<double>{0.02, 0.1} : std::vector<double>{0.1})
                 dadd(v, sc, FMXD_DRIFT_GYRO, d, 1u - a);
-            for (double b : full ? std::vector<double>{0.05, -0.05, 0.03}
-                                 : std::vector<double>{0.05})
+            for (double b :
+                 full ? std::vector<double>{0.05, -0.05, 0.03} : std::vector<double>{0.05})
                 dadd(v, sc, FMXD_AUX_BIAS, b, a);
         }
         dadd(v, sc, FMXD_FROZEN, 0.0);
@@ -309,8 +309,9 @@ int run_driving(bool full, bool baseline, bool no_aux, uint64_t seed, FILE *csv)
             verdict = "false-alarm";
         }
         if (csv != nullptr) {
-            std::fprintf(csv, "%s,%s,%g,%g,%u,%d,%d,%ld,%u,%u,%u,%u,%u,0x%02x,0x%02x,0x%02x,%.4f,"
-                              "%.4f,%.3f,%.2f,%s\n",
+            std::fprintf(csv,
+                         "%s,%s,%g,%g,%u,%d,%d,%ld,%u,%u,%u,%u,%u,0x%02x,0x%02x,0x%02x,%.4f,"
+                         "%.4f,%.3f,%.2f,%s\n",
                          c.scenario, fmxd_fault_name(c.fault), c.amp, c.onset_s, c.axis,
                          s.aux ? 1 : 0, r.detected ? 1 : 0,
                          r.latency == UINT32_MAX ? -1L : static_cast<long>(r.latency),

@@ -30,20 +30,20 @@ extern "C" {
 
 enum fmxd_fault {
     FMXD_NONE = 0,
-    FMXD_STUCK_ACC,   /* one accelerometer axis (axis) keeps its value at the onset */
-    FMXD_STUCK_GYRO,  /* one gyro axis keeps its value at the onset */
-    FMXD_FROZEN,      /* the whole sample (gyro, accel, temperature) repeats */
-    FMXD_BIAS_ACC,    /* accelerometer axis + amp g */
-    FMXD_BIAS_GYRO,   /* gyro axis + amp deg/s */
-    FMXD_NOISE_BURST, /* + N(0, amp g) on the three accelerometer axes for 1 s */
-    FMXD_SATURATION,  /* the accelerometer axis at its range (18 g, flagged saturated) */
-    FMXD_DRIFT_ACC,   /* accelerometer axis + amp g/s x (t - onset) */
-    FMXD_DRIFT_GYRO,  /* gyro axis + amp deg/s per s x (t - onset) */
-    FMXD_SPEED_LOST,  /* no speed frame from the onset on (the receiver times out) */
-    FMXD_SPEED_FROZEN,/* the same speed frame again and again (counter too: E2E REPEATED) */
-    FMXD_SPEED_STUCK, /* the sender's speed value stuck at its onset value, E2E intact */
-    FMXD_AUX_BIAS,    /* the second accelerometer's axis + amp g (two-sensor disagreement) */
-    FMXD_READ_ERROR,  /* the IMU driver returns INC_ERR_BUS for amp s (a bus fault) */
+    FMXD_STUCK_ACC,    /* one accelerometer axis (axis) keeps its value at the onset */
+    FMXD_STUCK_GYRO,   /* one gyro axis keeps its value at the onset */
+    FMXD_FROZEN,       /* the whole sample (gyro, accel, temperature) repeats */
+    FMXD_BIAS_ACC,     /* accelerometer axis + amp g */
+    FMXD_BIAS_GYRO,    /* gyro axis + amp deg/s */
+    FMXD_NOISE_BURST,  /* + N(0, amp g) on the three accelerometer axes for 1 s */
+    FMXD_SATURATION,   /* the accelerometer axis at its range (18 g, flagged saturated) */
+    FMXD_DRIFT_ACC,    /* accelerometer axis + amp g/s x (t - onset) */
+    FMXD_DRIFT_GYRO,   /* gyro axis + amp deg/s per s x (t - onset) */
+    FMXD_SPEED_LOST,   /* no speed frame from the onset on (the receiver times out) */
+    FMXD_SPEED_FROZEN, /* the same speed frame again and again (counter too: E2E REPEATED) */
+    FMXD_SPEED_STUCK,  /* the sender's speed value stuck at its onset value, E2E intact */
+    FMXD_AUX_BIAS,     /* the second accelerometer's axis + amp g (two-sensor disagreement) */
+    FMXD_READ_ERROR,   /* the IMU driver returns INC_ERR_BUS for amp s (a bus fault) */
     FMXD_FAULTS
 };
 
@@ -64,13 +64,13 @@ struct fmxd_setup {
 };
 
 struct fmxd_result {
-    int modelled;          /* 1 (every case is) */
-    bool detected;         /* a read error, or an output after the onset not valid with a fault
+    int modelled;         /* 1 (every case is) */
+    bool detected;        /* a read error, or an output after the onset not valid with a fault
                               bit (APP_ESC_D_*, ATT_FAULT_*) */
-    uint32_t latency;      /* samples from the onset to the detection (UINT32_MAX: none) */
-    uint32_t outputs;      /* DRIVING outputs after the onset */
-    uint32_t valid;        /* of them valid */
-    uint32_t valid_wrong;  /* valid with error > bound */
+    uint32_t latency;     /* samples from the onset to the detection (UINT32_MAX: none) */
+    uint32_t outputs;     /* DRIVING outputs after the onset */
+    uint32_t valid;       /* of them valid */
+    uint32_t valid_wrong; /* valid with error > bound */
     uint32_t read_errors;
     uint32_t diag_word;    /* OR of APP_ESC_D_* over the outputs after the onset */
     uint32_t att_word;     /* OR of ATT_FAULT_* */
