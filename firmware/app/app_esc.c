@@ -25,6 +25,45 @@ int app_esc_cfg_default(struct app_esc_cfg *cfg, uint32_t rate_mhz)
     cfg->drive_speed_mps = FX_Q16_HALF;
     cfg->park_s = FX_Q16_INT(2);
     cfg->autonull_after_s = FX_Q16_INT(60);
+    cfg->flat_n = 0u; /* the driving diagnostics off: app_esc_diag_default */
+    cfg->veh_margin_g = 0;
+    cfg->veh_bound_k = FX_Q16_HALF;
+    cfg->veh_dyn_k = (fx_q16_t)((FX_Q16_ONE * 3 + 5) / 10);
+    cfg->veh_min_mps = FX_Q16_INT(3);
+    cfg->xchk_thr_g = 0;
+    cfg->diag_shift = 8u;
+    cfg->diag_persist_n = 41u;
+    return INC_OK;
+}
+
+int app_esc_diag_default(struct app_esc_cfg *cfg)
+{
+    /* the rate in samples/s (Q16 Hz, rounded); 0.05 s and 0.3125 s in samples */
+    uint32_t fs, n, sh = 1u;
+    if (cfg == NULL) return INC_ERR_NULL;
+    fs = (uint32_t)(((uint64_t)(uint32_t)cfg->att.sample_rate_hz + 32768u) >> 16);
+    cfg->flat_n = 16u;
+    cfg->veh_margin_g = (fx_q16_t)((FX_Q16_ONE * 15 + 500) / 1000); /* 0.015 g */
+    cfg->veh_bound_k = FX_Q16_HALF;
+    cfg->veh_dyn_k = (fx_q16_t)((FX_Q16_ONE * 3 + 5) / 10);
+    cfg->veh_min_mps = FX_Q16_INT(3);
+    cfg->xchk_thr_g = (fx_q16_t)((FX_Q16_ONE * 3 + 50) / 100); /* 0.03 g */
+    n = (fs + 10u) / 20u;                                      /* 0.05 s */
+    cfg->diag_persist_n = n < 2u ? 2u : n;
+    n = (fs * 5u + 8u) / 16u; /* 0.3125 s: the nearest power of two, geometrically */
+    while (sh < 16u && (uint64_t)n * n >= ((uint64_t)1 << (2u * sh + 1u)))
+        sh++;
+    cfg->diag_shift = (uint8_t)sh;
+    return INC_OK;
+}
+
+int app_esc_set_aux_accel(struct app_esc *e, const fx_q16_t acc_g[3], bool valid)
+{
+    if (e == NULL || acc_g == NULL) return INC_ERR_NULL;
+    e->aux_acc[0] = acc_g[0];
+    e->aux_acc[1] = acc_g[1];
+    e->aux_acc[2] = acc_g[2];
+    e->aux_valid = valid;
     return INC_OK;
 }
 
@@ -37,6 +76,13 @@ int app_esc_init(struct app_esc *e, const struct app_esc_cfg *cfg)
     if (cfg->out_div < 1u || cfg->out_div > 65535u || cfg->drive_speed_mps <= 0 ||
         cfg->drive_speed_mps > FX_Q16_INT(10) || cfg->park_s < 0 || cfg->park_s > FX_Q16_INT(60) ||
         cfg->autonull_after_s < FX_Q16_ONE || cfg->autonull_after_s > FX_Q16_INT(3600))
+        return INC_ERR_INVAL;
+    if (cfg->flat_n == 1u || cfg->flat_n > 65535u || cfg->veh_margin_g < 0 ||
+        cfg->veh_margin_g > FX_Q16_ONE || cfg->veh_bound_k <= 0 || cfg->veh_bound_k > FX_Q16_ONE ||
+        cfg->veh_dyn_k < 0 || cfg->veh_dyn_k > FX_Q16_ONE || cfg->veh_min_mps < 0 ||
+        cfg->veh_min_mps > FX_Q16_INT(20) || cfg->xchk_thr_g < 0 || cfg->xchk_thr_g > FX_Q16_ONE ||
+        cfg->diag_shift < 1u || cfg->diag_shift > 16u || cfg->diag_persist_n < 1u ||
+        cfg->diag_persist_n > (1u << 24))
         return INC_ERR_INVAL;
     err = att_init(&e->att, &cfg->att);
     if (err != INC_OK) return err;
@@ -51,6 +97,20 @@ int app_esc_init(struct app_esc *e, const struct app_esc_cfg *cfg)
     e->still_n = 0u;
     e->since_cal_n = 0u;
     e->mode = APP_MODE_PARKED;
+    if (cfg->flat_n != 0u) {
+        err = xcheck_flat_init(&e->flat, cfg->flat_n, 0x3Fu);
+        if (err != INC_OK) return err;
+    }
+    err = xcheck_mon_init(&e->vmon, cfg->diag_shift, cfg->diag_persist_n);
+    if (err == INC_OK) err = xcheck_mon_init(&e->kmon, cfg->diag_shift, cfg->diag_persist_n);
+    if (err == INC_OK) err = xcheck_mon_init(&e->xmon, cfg->diag_shift, cfg->diag_persist_n);
+    if (err != INC_OK) return err;
+    e->v_prev = 0;
+    e->v_prev_ok = false;
+    e->aux_acc[0] = e->aux_acc[1] = e->aux_acc[2] = 0;
+    e->aux_valid = false;
+    e->veh_level = e->xchk_level = e->veh_thr = 0;
+    e->diag = 0u;
     e->ready = true;
     return INC_OK;
 }
@@ -110,6 +170,73 @@ static void update_mode(struct app_esc *e, struct app *a, const struct app_vehic
     }
 }
 
+/* pi/180 in Q16, rounded up: bound_deg x this >= sin(bound) in g per g */
+#define DEG2RAD_Q16_UP 1144
+
+/* The driving diagnostics of one sample (after att_update and the mode): see app_esc.h. */
+static void diag_step(struct app_esc *e, const struct sensor_sample *raw,
+                      const struct att_sample *as, const struct app_vehicle *veh)
+{
+    const bool have_speed = veh != NULL && veh->valid;
+    const bool acc_sat = (as->sat & ATT_SAT_ACC_MASK) != 0u;
+    bool fail = false;
+    if (e->cfg.flat_n != 0u && raw != NULL) {
+        /* the driver's values, before the record's temperature models can move them */
+        const int32_t v[XCHECK_FLAT_CH] = {raw->gyro_dps[0], raw->gyro_dps[1], raw->gyro_dps[2],
+                                           raw->accel_g[0],  raw->accel_g[1],  raw->accel_g[2]};
+        if (xcheck_flat_step(&e->flat, v) != 0u) e->diag |= APP_ESC_D_FLAT;
+    }
+    e->veh_level = e->veh_thr = 0;
+    if (e->cfg.veh_margin_g != 0 && e->mode == APP_MODE_DRIVING && have_speed &&
+        fx_abs(veh->speed_mps) >= e->cfg.veh_min_mps) {
+        const fx_q16_t bound = att_get_bound(&e->att);
+        if (e->v_prev_ok && !acc_sat && bound < FX_DEG_180) {
+            static const fx_q16_t zero3[3] = {0, 0, 0};
+            static const int32_t zero_up[3] = {0, 0, 0};
+            int32_t up[3];
+            fx_q16_t r[3], kin[3], klev, thr;
+            /* |speed| <= 200 m/s (att's input range; beyond it att rejects the sample and the
+             * residual clamps): the difference fits */
+            const fx_q16_t dv = fx_sub(veh->speed_mps, e->v_prev);
+            att_get_up(&e->att, up);
+            (void)xcheck_kin_residual(as->acc_g, up, dv, e->cfg.att.sample_rate_hz, veh->speed_mps,
+                                      veh->yaw_rate_dps, r);
+            /* -k alone: a and up 0 */
+            (void)xcheck_kin_residual(zero3, zero_up, dv, e->cfg.att.sample_rate_hz, veh->speed_mps,
+                                      veh->yaw_rate_dps, kin);
+            klev = xcheck_mon_step(&e->kmon, kin, 1u, INT32_MAX, NULL); /* dv/dt only */
+            /* bound <= 180 deg (2^23.5 Q16) x 1144 / 2^16 <= 3.15 g; klev <= 32 g; each
+             * product with a Q16 factor <= 1 and their sum (+ margin <= 1 g) fit */
+            thr = e->cfg.veh_margin_g +
+                  (fx_q16_t)(((int64_t)bound * DEG2RAD_Q16_UP * e->cfg.veh_bound_k +
+                              ((int64_t)1 << 31)) >>
+                             32) +
+                  (fx_q16_t)(((int64_t)klev * e->cfg.veh_dyn_k + 32768) >> 16);
+            e->veh_level = xcheck_mon_step(&e->vmon, r, 3u, thr, &fail);
+            e->veh_thr = thr;
+            if (fail) e->diag |= APP_ESC_D_VEH;
+            e->v_prev = veh->speed_mps;
+        } else if (!e->v_prev_ok) {
+            e->v_prev = veh->speed_mps; /* (a held sample keeps v_prev: its dv goes into the
+                                           next residual) */
+        }
+        e->v_prev_ok = true;
+    } else {
+        xcheck_mon_reset(&e->vmon);
+        xcheck_mon_reset(&e->kmon);
+        e->v_prev_ok = false;
+    }
+    e->xchk_level = 0;
+    if (e->cfg.xchk_thr_g != 0 && e->aux_valid && !acc_sat) {
+        fx_q16_t d[3];
+        unsigned i;
+        for (i = 0; i < 3u; i++)
+            d[i] = fx_sub(as->acc_g[i], e->aux_acc[i]);
+        e->xchk_level = xcheck_mon_step(&e->xmon, d, 7u, e->cfg.xchk_thr_g, &fail);
+        if (fail) e->diag |= APP_ESC_D_XCHK;
+    }
+}
+
 int app_esc_step(struct app_esc *e, struct app *a, const struct sensor_sample *s, int read_err,
                  const struct app_vehicle *veh, struct app_esc_output *out, bool *have_out)
 {
@@ -135,6 +262,11 @@ int app_esc_step(struct app_esc *e, struct app *a, const struct sensor_sample *s
     err = att_update(&e->att, &as);
     if (err != INC_OK && err != INC_ERR_RANGE) return err;
     update_mode(e, a, veh);
+    diag_step(e, s, &as, veh);
+    out->diag = e->diag;
+    out->veh_level_g = e->veh_level;
+    out->veh_thr_g = e->veh_thr;
+    out->xchk_level_g = e->xchk_level;
     if (e->mode == APP_MODE_DRIVING) {
         if (++e->n_out < e->cfg.out_div) return INC_OK;
         e->n_out = 0u;
@@ -144,6 +276,8 @@ int app_esc_step(struct app_esc *e, struct app *a, const struct sensor_sample *s
         out->bound_deg = att_get_bound(&e->att);
         out->valid = att_get_valid(&e->att); /* with require_aiding: never without the speed */
         out->att_fault = att_get_status(&e->att);
+        if (e->diag != 0u) out->valid = false; /* a latched driving diagnostic */
+        if (!as.veh_valid) out->diag |= APP_ESC_D_NO_SPEED;
         out->epb.valid = false;
         *have_out = true;
     } else if (done) {

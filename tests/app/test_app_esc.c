@@ -212,11 +212,103 @@ static void test_bad_calls(void)
     CHECK(!app_esc_autonull_due(NULL));
 }
 
+/* The driving diagnostics (app_esc_diag_default): none fires on a clean drive; then each one
+ * fires on its fault (a flat gyro channel, an accelerometer bias step against the wheel speed,
+ * the second accelerometer disagreeing), latches, and takes the validity of every later DRIVING
+ * output; bad values are refused. */
+static void drive_case(int fault, uint8_t want)
+{
+    struct app_esc_cfg ec;
+    struct app_vehicle veh = {true, 0, 0};
+    struct sensor_sample s;
+    struct app_esc_output o;
+    unsigned i, valid_before = 0u, valid_after = 0u, out_before = 0u, first = 0u;
+    uint8_t seen = 0u;
+    bool have;
+    setup(&ec);
+    REQUIRE(app_esc_diag_default(&ec) == INC_OK);
+    CHECK_EQ_INT(ec.flat_n, 16);
+    CHECK_EQ_INT(ec.diag_shift, 8);
+    CHECK_EQ_INT(ec.diag_persist_n, 41);
+    REQUIRE(app_esc_init(&esc, &ec) == INC_OK);
+    for (i = 0; i < 24u * 819u; i++) {
+        /* 8 s parked, then driving at 15 m/s rolling 4 +- 10 deg at 0.2 Hz; the fault at 16 s */
+        const double t = i / 819.2, td = t < 8.0 ? 0.0 : t - 8.0;
+        const double roll = 4.0 + 10.0 * sin(2 * 3.14159265358979 * 0.2 * td);
+        const double w[3] = {t < 8.0 ? 0.0
+                                     : 10.0 * 2 * 3.14159265358979 * 0.2 *
+                                           cos(2 * 3.14159265358979 * 0.2 * td),
+                             0, 0};
+        const bool on = t >= 16.0;
+        veh.speed_mps = t < 8.0 ? 0 : FX_Q16_INT(15);
+        fx_q16_t aux[3];
+        sample(&s, roll, 0.0, w, 0.0);
+        aux[0] = s.accel_g[0];
+        aux[1] = s.accel_g[1];
+        aux[2] = s.accel_g[2];
+        if (on && fault == 1) s.gyro_dps[2] = FX_Q16_ONE / 10; /* a stuck yaw-rate channel */
+        if (on && fault == 2) s.accel_g[0] += FX_Q16_ONE / 10; /* 100 mg on x */
+        if (on && fault == 3) aux[0] += FX_Q16_ONE / 20;       /* 50 mg on the second part */
+        REQUIRE(app_esc_set_aux_accel(&esc, aux, fault != 2) == INC_OK);
+        REQUIRE(app_esc_step(&esc, &app, &s, INC_OK, &veh, &o, &have) == INC_OK);
+        if (!have || o.mode != APP_MODE_DRIVING) continue;
+        if (!on) {
+            out_before++;
+            valid_before += o.valid ? 1u : 0u;
+            CHECK_EQ_INT(o.diag, 0);
+        } else {
+            valid_after += o.valid ? 1u : 0u;
+            if (o.diag != 0u && first == 0u) first = i;
+            seen |= o.diag;
+        }
+    }
+    printf("  fault %d: valid %u/%u before, %u after; diag 0x%02x, %u samples after the onset\n",
+           fault, valid_before, out_before, valid_after, seen,
+           first > 0u ? first - 16u * 819u : 0u);
+    CHECK(valid_before > out_before * 3u / 4u);
+    CHECK_EQ_INT(seen, want);
+    if (want != 0u) {
+        CHECK(first > 0u && first - 16u * 819u <= 819u); /* within 1 s */
+        CHECK(valid_after <= 819u / 8u + 1u);            /* none valid after it */
+    } else {
+        CHECK(valid_after > 0u);
+    }
+}
+
+static void test_driving_diagnostics(void)
+{
+    struct app_esc_cfg ec;
+    const fx_q16_t a3[3] = {0, 0, FX_Q16_ONE};
+    drive_case(0, 0u);
+    drive_case(1, APP_ESC_D_FLAT);
+    drive_case(2, APP_ESC_D_VEH);
+    drive_case(3, APP_ESC_D_XCHK);
+    setup(&ec);
+    CHECK_ERR(app_esc_diag_default(NULL), INC_ERR_NULL);
+    CHECK_ERR(app_esc_set_aux_accel(NULL, a3, true), INC_ERR_NULL);
+    CHECK_ERR(app_esc_set_aux_accel(&esc, NULL, true), INC_ERR_NULL);
+    REQUIRE(app_esc_diag_default(&ec) == INC_OK);
+    ec.flat_n = 1u;
+    CHECK_ERR(app_esc_init(&esc, &ec), INC_ERR_INVAL);
+    REQUIRE(app_esc_diag_default(&ec) == INC_OK);
+    ec.veh_bound_k = 0;
+    CHECK_ERR(app_esc_init(&esc, &ec), INC_ERR_INVAL);
+    REQUIRE(app_esc_diag_default(&ec) == INC_OK);
+    ec.xchk_thr_g = FX_Q16_INT(2);
+    CHECK_ERR(app_esc_init(&esc, &ec), INC_ERR_INVAL);
+    REQUIRE(app_esc_diag_default(&ec) == INC_OK);
+    ec.diag_shift = 17u;
+    CHECK_ERR(app_esc_init(&esc, &ec), INC_ERR_INVAL);
+    REQUIRE(app_esc_diag_default(&ec) == INC_OK);
+    CHECK_OK(app_esc_init(&esc, &ec));
+}
+
 int main(void)
 {
     UNIT_RUN(test_modes);
     UNIT_RUN(test_no_speed);
     UNIT_RUN(test_gyro_correction);
     UNIT_RUN(test_bad_calls);
+    UNIT_RUN(test_driving_diagnostics);
     return unit_report();
 }

@@ -11,6 +11,7 @@
 extern "C" {
 #include "inclino/error.h"
 #include "inclino/sim/faultmx.h"
+#include "inclino/sim/faultmx_drive.h"
 #include "inclino/tool_summary.h"
 }
 #include "station.hpp"
@@ -192,6 +193,160 @@ std::vector<Case> matrix(bool full)
     return v;
 }
 
+// ---- the driving matrix (sim/faultmx_drive.h) ----
+
+struct DScen {
+    const char *name;
+    double onset_s; // the car is driving at the onset (docs/safety.md)
+};
+
+const DScen kScen[] = {{"braking", 16.0},      {"cornering", 20.0},   {"rough_road", 20.0},
+                       {"acceleration", 10.0}, {"lane_change", 20.0}, {"banked_slope", 20.0},
+                       {"speed_bumps", 12.0},  {"parking", 12.0}};
+
+void dadd(std::vector<fmxd_case> &v, const DScen &sc, enum fmxd_fault f, double amp,
+          unsigned axis = 0)
+{
+    fmxd_case c;
+    c.fault = f;
+    c.scenario = sc.name;
+    c.amp = amp;
+    c.onset_s = sc.onset_s;
+    c.axis = axis;
+    v.push_back(c);
+}
+
+std::vector<fmxd_case> dmatrix(bool full)
+{
+    std::vector<fmxd_case> v;
+    const size_t ns = full ? sizeof(kScen) / sizeof(kScen[0]) : 3u;
+    for (size_t i = 0; i < ns; i++) {
+        const DScen &sc = kScen[i];
+        dadd(v, sc, FMXD_NONE, 0.0);
+        for (unsigned a : full ? std::vector<unsigned>{0, 1} : std::vector<unsigned>{0}) {
+            dadd(v, sc, FMXD_STUCK_ACC, 0.0, a);
+            dadd(v, sc, FMXD_STUCK_GYRO, 0.0, 1u - a);
+            for (double b : full ? std::vector<double>{0.02, 0.05, -0.05, 0.1}
+                                 : std::vector<double>{0.05, -0.05})
+                dadd(v, sc, FMXD_BIAS_ACC, b, a);
+            for (double b :
+                 full ? std::vector<double>{0.5, 1.0, 2.0, -2.0} : std::vector<double>{2.0})
+                dadd(v, sc, FMXD_BIAS_GYRO, b, 1u - a);
+            dadd(v, sc, FMXD_SATURATION, 0.0, a);
+            for (double d :
+                 full ? std::vector<double>{0.001, 0.005, -0.005} : std::vector<double>{0.005})
+                dadd(v, sc, FMXD_DRIFT_ACC, d, a);
+            for (double d : full ? std::vector<double>{0.02, 0.1} : std::vector<double>{0.1})
+                dadd(v, sc, FMXD_DRIFT_GYRO, d, 1u - a);
+            for (double b :
+                 full ? std::vector<double>{0.05, -0.05, 0.03} : std::vector<double>{0.05})
+                dadd(v, sc, FMXD_AUX_BIAS, b, a);
+        }
+        dadd(v, sc, FMXD_FROZEN, 0.0);
+        dadd(v, sc, FMXD_NOISE_BURST, 0.05);
+        dadd(v, sc, FMXD_SPEED_LOST, 0.0);
+        dadd(v, sc, FMXD_SPEED_FROZEN, 0.0);
+        dadd(v, sc, FMXD_SPEED_STUCK, 0.0);
+        dadd(v, sc, FMXD_READ_ERROR, 0.1);
+    }
+    return v;
+}
+
+// Stated detection latency of the driving matrix: 1 s (820 samples at 819.2 SPS): the
+// diagnostics' two-stage low-pass (group delay 0.62 s) and persistence (0.05 s) with the output
+// interval, rounded up.
+constexpr uint32_t kDriveLatency = 820u;
+
+int run_driving(bool full, bool baseline, bool no_aux, uint64_t seed, FILE *csv)
+{
+    if (csv != nullptr) {
+        std::fprintf(csv, "scenario,fault,amp,onset_s,axis,aux,detected,latency_samples,"
+                          "latency_limit,outputs,valid,valid_wrong,read_errors,diag_word,att_word,"
+                          "false_diag,max_err_deg,bound_deg,max_veh_ratio,max_xchk_mg,verdict\n");
+    }
+    fmxd_setup s;
+    s.seed = seed;
+    s.diagnostics = !baseline;
+    s.aux = !no_aux;
+    unsigned n = 0, detected = 0, harmless = 0, valid_wrong = 0, vw_outputs = 0, late = 0,
+             false_alarms = 0, hd = 0;
+    double veh_ratio_ff = 0.0, xchk_ff = 0.0;
+    for (const fmxd_case &c : dmatrix(full)) {
+        fmxd_result r;
+        const int err = fmxd_run(&s, &c, &r);
+        if (err != INC_OK) {
+            std::fprintf(stderr, "fault_matrix: driving case %s/%s failed (%s)\n", c.scenario,
+                         fmxd_fault_name(c.fault), inc_err_name(err));
+            return tool_summary_error(inc_err_name(err), 2);
+        }
+        n++;
+        std::string verdict;
+        if (r.valid_wrong > 0) {
+            valid_wrong++;
+            vw_outputs += r.valid_wrong;
+        }
+        if (c.fault == FMXD_NONE) {
+            if (r.false_diag != 0u) false_alarms++;
+            if (r.max_veh_ratio > veh_ratio_ff) veh_ratio_ff = r.max_veh_ratio;
+            if (r.max_xchk_g > xchk_ff) xchk_ff = r.max_xchk_g;
+            verdict = r.false_diag ? "false-alarm" : (r.valid_wrong ? "VALID-WRONG" : "ok");
+        } else if (r.detected && r.latency <= kDriveLatency) {
+            detected++;
+            verdict = r.valid_wrong ? "VALID-WRONG" : "detected";
+        } else if (r.detected && r.valid_wrong == 0) {
+            harmless++;
+            hd++;
+            verdict = "harmless-then-detected";
+        } else if (r.detected) {
+            late++;
+            verdict = "LATE";
+        } else {
+            if (r.valid_wrong == 0) harmless++;
+            verdict = r.valid_wrong ? "VALID-WRONG" : "harmless";
+        }
+        if (c.fault != FMXD_NONE && r.false_diag != 0u) {
+            false_alarms++; // a diagnostic fired before the fault came on
+            verdict = "false-alarm";
+        }
+        if (csv != nullptr) {
+            std::fprintf(csv,
+                         "%s,%s,%g,%g,%u,%d,%d,%ld,%u,%u,%u,%u,%u,0x%02x,0x%02x,0x%02x,%.4f,"
+                         "%.4f,%.3f,%.2f,%s\n",
+                         c.scenario, fmxd_fault_name(c.fault), c.amp, c.onset_s, c.axis,
+                         s.aux ? 1 : 0, r.detected ? 1 : 0,
+                         r.latency == UINT32_MAX ? -1L : static_cast<long>(r.latency),
+                         kDriveLatency, r.outputs, r.valid, r.valid_wrong, r.read_errors,
+                         r.diag_word, r.att_word, r.false_diag, r.max_err_deg, r.bound_deg,
+                         r.max_veh_ratio, r.max_xchk_g * 1e3, verdict.c_str());
+        }
+        std::printf("%-12s %-12s amp %-6g axis %u %-22s det %d lat %6ld  valid %u/%u wrong %u  "
+                    "diag 0x%02x att 0x%02x  max|err| %.3f bound %.3f  veh %.2f xchk %.1f mg\n",
+                    c.scenario, fmxd_fault_name(c.fault), c.amp, c.axis, verdict.c_str(),
+                    r.detected ? 1 : 0,
+                    r.latency == UINT32_MAX ? -1L : static_cast<long>(r.latency), r.valid,
+                    r.outputs, r.valid_wrong, r.diag_word, r.att_word, r.max_err_deg, r.bound_deg,
+                    r.max_veh_ratio, r.max_xchk_g * 1e3);
+    }
+    if (csv != nullptr && (std::ferror(csv) != 0 || std::fclose(csv) != 0)) {
+        return tool_summary_error("io", 2);
+    }
+    const bool pass = valid_wrong == 0 && late == 0 && false_alarms == 0;
+    tool_summary_add("matrix", "%s", full ? "driving-full" : "driving-short");
+    tool_summary_add("diagnostics", "%s", baseline ? "off" : "on");
+    tool_summary_add("aux", "%s", no_aux ? "no" : "sca3000");
+    tool_summary_add("cases", "%u", n);
+    tool_summary_add("detected", "%u", detected);
+    tool_summary_add("harmless", "%u", harmless);
+    tool_summary_add("harmless_then_detected", "%u", hd);
+    tool_summary_add("valid_wrong", "%u", valid_wrong);
+    tool_summary_add("valid_wrong_outputs", "%u", vw_outputs);
+    tool_summary_add("late", "%u", late);
+    tool_summary_add("false_alarms", "%u", false_alarms);
+    tool_summary_add("ff_veh_ratio_max", "%.3f", veh_ratio_ff);
+    tool_summary_add("ff_xchk_mg_max", "%.2f", xchk_ff * 1e3);
+    return tool_summary_end(pass ? "ok" : "fail", pass ? 0 : 1);
+}
+
 bool unum(const char *s, uint64_t &out)
 {
     if (s == nullptr || *s < '0' || *s > '9') return false;
@@ -204,7 +359,10 @@ bool unum(const char *s, uint64_t &out)
 void usage()
 {
     std::fprintf(
-        stderr, "usage: fault_matrix [--full] [--baseline] [--csv FILE] [--seed N] [--blocks N]\n"
+        stderr, "usage: fault_matrix [--driving [--no-aux]] [--full] [--baseline] [--csv FILE]\n"
+                "                    [--seed N] [--blocks N]\n"
+                "  --driving    the driving matrix (ESC attitude output on sim/vehicle scenarios)\n"
+                "               instead of the parked one; --no-aux: no SCA3000 beside the IMU\n"
                 "  --full       every amplitude and onset (default: the short matrix of CI)\n"
                 "  --baseline   the matrix's diagnostics off (noise floor, offset-change term and\n"
                 "               check, record plausibility, end-of-line verification)\n"
@@ -218,7 +376,7 @@ void usage()
 int main(int argc, char **argv)
 {
     tool_summary_begin("fault_matrix");
-    bool full = false, baseline = false;
+    bool full = false, baseline = false, driving = false, no_aux = false;
     std::string csv_path;
     uint64_t seed = 1, blocks = 5;
     for (int i = 1; i < argc; i++) {
@@ -227,6 +385,10 @@ int main(int argc, char **argv)
         bool ok = true;
         if (a == "--full")
             full = true;
+        else if (a == "--driving")
+            driving = true;
+        else if (a == "--no-aux")
+            no_aux = true;
         else if (a == "--baseline")
             baseline = true;
         else if (a == "--csv") {
@@ -257,6 +419,9 @@ int main(int argc, char **argv)
             std::fprintf(stderr, "fault_matrix: cannot write %s\n", csv_path.c_str());
             return tool_summary_error("io", 2);
         }
+    }
+    if (driving) return run_driving(full, baseline, no_aux, seed, csv);
+    if (csv != nullptr) {
         std::fprintf(
             csv,
             "part,fault,amp,onset_s,bit,slope_step_deg,modelled,init,cal,detected,latency_samples,"

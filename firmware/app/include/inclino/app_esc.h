@@ -17,6 +17,10 @@
  *      sustains accelerations longer than the estimator's filter, which without the speed it
  *      can neither remove nor bound; in PARKED, the EPB slope estimate of each completed block (unchanged:
  *      the EPB path is app_step's). Every output says which mode it came from.
+ *   5. the driving diagnostics, when configured (app_esc_diag_default; off by default): the
+ *      flat-line check, the vehicle-level check and the two-sensor cross-check
+ *      (inclino/xcheck.h); a failed one latches its APP_ESC_D_* bit and takes the validity of
+ *      every later DRIVING output (docs/safety.md, "The driving matrix").
  * While parked long enough (autonull_after_s at rest since the last calibration), the mode
  * manager asks for a gyro autonull (app_esc_autonull_due): the board runs the part's autonull
  * and the processor-side correction (gyrocal_run) and hands the result over with
@@ -35,6 +39,7 @@
 #include "inclino/error.h"
 #include "inclino/fx.h"
 #include "inclino/gyrocal.h"
+#include "inclino/xcheck.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -59,7 +64,49 @@ struct app_esc_cfg {
     fx_q16_t park_s;           /* at rest and slow this long: parked. [0, 60] s */
     fx_q16_t autonull_after_s; /* parked this long since the last gyro calibration: autonull
                                   due. [1, 3600] s */
+    /* The driving diagnostics (docs/safety.md, "The driving matrix"; inclino/xcheck.h). Each
+     * one only ever takes validity away: when its check fails it sets its APP_ESC_D_* bit,
+     * latched until app_esc_init, and every DRIVING output after it is not valid. The attitude
+     * itself (att) is never touched. app_esc_cfg_default leaves them off (0);
+     * app_esc_diag_default sets the values in brackets. */
+    uint32_t flat_n;         /* flat line: a gyro or accelerometer channel of the driver's sample
+                              (before calibration) equal for flat_n consecutive samples (a MEMS output always shows
+                              its noise: ADIS16405 3 LSB rms accel, 20 LSB gyro). 0: off, else
+                              [2, 65535] [16: P(false) < 1e-15 per channel-sample at 3 LSB] */
+    fx_q16_t veh_margin_g;   /* vehicle-level check: fails when the low-passed residual
+                              a - up - (dv/dt, yaw x v, 0)/g0, x or y, exceeds
+                              veh_bound_k x the output's own bound in g (bound_deg x pi/180 >=
+                              sin(bound)) + veh_dyn_k x the low-passed kinematic acceleration
+                              (wheel slip and the speed's delay grow with it) + this margin
+                              (the speed's 0.01 m/s steps, vibration). 0: off, else (0, 1] g
+                              [0.015: over the eight fault-free scenarios the low-passed residual
+                              exceeds the other two terms by at most 4.6 mg] */
+    fx_q16_t veh_bound_k;    /* Q16, (0, 1] [0.5: the check is to fire while the error is still
+                              within the bound; the margin below was measured with this factor] */
+    fx_q16_t veh_dyn_k;      /* Q16, [0, 1] [0.3; longitudinal only: the yaw rate x speed term
+                              has neither slip nor delay of that size] */
+    fx_q16_t veh_min_mps;    /* the check runs only above this speed (the wheel-speed sensors'
+                              edges are too sparse below a few m/s, down to no speed at all
+                              below their minimum), [0, 20] m/s [3] */
+    fx_q16_t xchk_thr_g;     /* two-sensor cross-check: fails when the low-passed difference of
+                              the second accelerometer (app_esc_set_aux_accel) and the IMU's,
+                              any axis, exceeds this. 0: off, else (0, 1] g [0.03: both parts'
+                              offset-change terms, 10 mg each, + 5 x the low-passed noise of
+                              both (ADIS 10 mg, SCA3000 5 mg rms per sample: 2.5 mg) + 7.5 mg
+                              for their sampling skew and placement under vibration] */
+    uint8_t diag_shift;      /* the residuals' two-stage low-pass, 2^-shift per sample and stage,
+                              [1, 16] [8: 0.31 s per stage at 819.2 SPS, group delay 0.62 s] */
+    uint32_t diag_persist_n; /* samples above the threshold that make a failure,
+                                [1, 2^24] [41: 50 ms at 819.2 SPS] */
 };
+
+/* The driving diagnostics' bits (struct app_esc_output.diag). D_FLAT, D_VEH and D_XCHK are
+ * latched faults; D_NO_SPEED is the state of this output (no usable vehicle input: with
+ * require_aiding the output is not valid, att.h). */
+#define APP_ESC_D_FLAT 0x01u     /* a channel flat-lined (xcheck_flat) */
+#define APP_ESC_D_VEH 0x02u      /* the vehicle-level check failed */
+#define APP_ESC_D_XCHK 0x04u     /* the two accelerometers disagree */
+#define APP_ESC_D_NO_SPEED 0x08u /* this DRIVING output had no vehicle input */
 
 /* The output of one sample (app_esc_step sets *have_out when there is one). */
 struct app_esc_output {
@@ -67,9 +114,13 @@ struct app_esc_output {
     bool valid;   /* DRIVING: att_get_valid; PARKED: the EPB result's validity */
     int32_t q[4]; /* DRIVING: sensor to earth, Q30 w x y z */
     fx_q16_t roll_deg, pitch_deg;
-    fx_q16_t bound_deg;    /* DRIVING: 99.9 % inclination-error bound; PARKED: slope bound */
-    uint8_t att_fault;     /* ATT_FAULT_* */
-    struct app_result epb; /* PARKED: the slope estimate (valid only then) */
+    fx_q16_t bound_deg; /* DRIVING: 99.9 % inclination-error bound; PARKED: slope bound */
+    uint8_t att_fault;  /* ATT_FAULT_* */
+    uint8_t diag;       /* APP_ESC_D_* (DRIVING outputs; the latched bits in both modes) */
+    fx_q16_t veh_level_g, xchk_level_g; /* the diagnostics' low-passed residuals now (Q16 g;
+                                           0 while a check is off or not running) */
+    fx_q16_t veh_thr_g;                 /* the vehicle-level check's threshold now (Q16 g) */
+    struct app_result epb;              /* PARKED: the slope estimate (valid only then) */
 };
 
 struct app_esc {
@@ -82,12 +133,30 @@ struct app_esc {
     uint32_t since_cal_n;        /* samples parked since the last gyro calibration */
     uint8_t mode;
     bool ready;
+    /* the driving diagnostics */
+    struct xcheck_flat flat;
+    struct xcheck_mon vmon, kmon, xmon;
+    fx_q16_t v_prev;     /* the previous sample's speed (v_prev_ok) */
+    fx_q16_t aux_acc[3]; /* the second accelerometer's latest calibrated sample */
+    fx_q16_t veh_level, xchk_level, veh_thr;
+    uint8_t diag; /* latched APP_ESC_D_* */
+    bool v_prev_ok, aux_valid;
 };
 
 /* Defaults for a part at rate_mhz (milli-samples/s): att_config_default at that rate, an output
  * every 8 samples (about 100 Hz at 819.2 SPS), driving above 0.5 m/s, parked after 2 s at rest,
  * autonull due after 60 s parked. INC_ERR_NULL, INC_ERR_INVAL (rate outside 100..4000 SPS). */
 int app_esc_cfg_default(struct app_esc_cfg *cfg, uint32_t rate_mhz);
+
+/* The driving diagnostics on, with the values in brackets in struct app_esc_cfg, scaled to the
+ * configured sample rate (persistence 50 ms, low-pass 2^8 samples at 819.2 SPS, halved per
+ * halving of the rate, at least 2). Call after app_esc_cfg_default. INC_ERR_NULL. */
+int app_esc_diag_default(struct app_esc_cfg *cfg);
+
+/* The second accelerometer's latest calibrated sample (Q16 g, the IMU's frame; an SCA3000
+ * beside the ADIS), for the two-sensor cross-check of the next app_esc_step calls; valid false
+ * (not fitted, a read error, a saturated axis) holds the check. INC_ERR_NULL. */
+int app_esc_set_aux_accel(struct app_esc *e, const fx_q16_t acc_g[3], bool valid);
 
 /* Validate cfg (att_init's checks included) and start PARKED with no gyro correction.
  * INC_ERR_NULL, INC_ERR_INVAL; on error every step is refused (INC_ERR_STATE). */
