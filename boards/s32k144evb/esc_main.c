@@ -3,7 +3,8 @@
  * engine, the parked/driving application (inclino/app_esc.h: EPB blocks while parked, the
  * attitude estimator on every sample while driving), its outputs as CAN frames on FlexCAN0
  * (INC_Slope / INC_Attitude / INC_Status, AUTOSAR E2E Profile 1: docs/can.md, inclino.dbc) and
- * the vehicle speed frame (VEH_Speed, E2E checked by can_speed_rx) as the estimator's aiding.
+ * the vehicle speed frame (VEH_Speed, E2E checked by can_speed_rx) as the estimator's aiding,
+ * with the driving diagnostics on (app_esc_diag_default: flat line, vehicle-level check).
  * The calibration record is on the FTFC data flash (boards/s32k1/s32k_image.c); the vectors are
  * in isr.c. docs/boards.md, "The ESC image".
  */
@@ -78,6 +79,11 @@ static int up(void)
     }
     if (err == INC_OK) {
         err = app_esc_cfg_default(&ecfg, rate);
+    }
+    if (err == INC_OK) {
+        /* the flat-line and vehicle-level checks (no second accelerometer on this board:
+         * the cross-check never runs) */
+        err = app_esc_diag_default(&ecfg);
     }
     if (err == INC_OK) {
         err = app_esc_init(&esc, &ecfg);
