@@ -171,7 +171,6 @@ static int lp_transfer(void *ctx, struct spi_dev *dev, const uint16_t *tx, uint1
     size_t sent = 0, got = 0;
     bool end_pending = cs == SPI_CS_HOLD;
     bool slept_out = false;
-    int err;
 
     if (pcs < 0) {
         return INC_ERR_INVAL;
@@ -179,7 +178,7 @@ static int lp_transfer(void *ctx, struct spi_dev *dev, const uint16_t *tx, uint1
     /* The register fields of this timing: computed once per timing (64-bit divisions), kept
      * while the same device timing and CS policy come again. */
     if (!lp->ck_valid || lp->ck_cs != (uint8_t)cs || !same_timing(&lp->ck_t, t)) {
-        err = spi_lpspi_clock_for(lp->cfg.fclk_hz, t, cs, &c);
+        const int err = spi_lpspi_clock_for(lp->cfg.fclk_hz, t, cs, &c);
         if (err != INC_OK) {
             return err; /* nothing reached the bus */
         }

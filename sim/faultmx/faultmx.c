@@ -9,10 +9,10 @@
 #include "inclino/sim/part.h"
 
 static const char *const names[FMX_FAULTS] = {
-    "none",       "stuck_output", "frozen",    "bias_acc",   "bias_gyro", "noise_burst",
-    "saturation", "drift",        "miso_high", "miso_low",   "bit_flip",  "corrupt_frame",
-    "missed_dr",  "device_error", "wrong_id",  "stuck_bit",  "rec_torn",  "rec_corrupt",
-    "rec_offset", "rec_foreign",  "supply",    "temp_stuck", "temp_range"};
+    "none",       "stuck_output", "frozen",    "bias_acc",   "bias_gyro",  "noise_burst",
+    "saturation", "drift",        "miso_high", "miso_low",   "bit_flip",   "corrupt_frame",
+    "missed_dr",  "device_error", "wrong_id",  "stuck_bit",  "rec_torn",   "rec_corrupt",
+    "rec_offset", "rec_foreign",  "supply",    "temp_stuck", "temp_range", "extra_dr"};
 
 const char *fmx_fault_name(enum fmx_fault f)
 {
@@ -150,6 +150,7 @@ static int part_fault(struct sim_part *p, struct epb_rig *r, const struct fmx_ca
         a.mask = 0x0101u;
         break;
     case FMX_MISSED_DR: f = SIM_FAULT_NO_DATA_READY; break;
+    case FMX_EXTRA_DR: f = SIM_FAULT_EXTRA_DATA_READY; break;
     case FMX_DEVICE_ERROR: f = SIM_FAULT_DEVICE_ERROR; break;
     case FMX_WRONG_ID: f = SIM_FAULT_WRONG_ID; break;
     case FMX_STUCK_BIT:

@@ -14,8 +14,9 @@
      (1u << SIM_FAULT_NOISE_BURST) | (1u << SIM_FAULT_SATURATION))
 
 static const char *const names[SIM_FAULT_COUNT] = {
-    "miso_stuck_high", "miso_stuck_low", "wrong_id",  "busy",      "no_data_ready", "corrupt_frame",
-    "device_error",    "frozen_output",  "stuck_bit", "bias_jump", "noise_burst",   "saturation",
+    "miso_stuck_high", "miso_stuck_low", "wrong_id",         "busy",      "no_data_ready",
+    "corrupt_frame",   "device_error",   "frozen_output",    "stuck_bit", "bias_jump",
+    "noise_burst",     "saturation",     "extra_data_ready",
 };
 
 const char *sim_fault_name(enum sim_fault f)

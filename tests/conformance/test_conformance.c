@@ -593,6 +593,9 @@ static const struct row matrix[] = {
      false,
      {E2(INC_ERR_BUSY, INC_ERR_TIMEOUT), E2(INC_ERR_BUSY, INC_ERR_TIMEOUT), E(NA)}},
     {SIM_FAULT_NO_DATA_READY, false, {E(INC_ERR_TIMEOUT), E(INC_ERR_TIMEOUT), E(INC_ERR_TIMEOUT)}},
+    /* A spurious data-ready pulse halfway through each period: no new sample behind it; the
+     * driver must not deliver the old sample again as new (not modelled on the ADIS16255). */
+    {SIM_FAULT_EXTRA_DATA_READY, false, {E(NA), E(INC_OK), E(INC_OK)}},
     /* The ADIS protocol has no check word: a flipped data bit is a plausible value. The
      * ADIS16255's chained SENS_AVG word is corrupted with the rest (every word XOR 0x0101):
      * the read is refused as garbage (INC_ERR_BUSY); the ADIS IMU burst has no such word. */
@@ -687,6 +690,42 @@ static void test_fault_matrix(void)
     }
 }
 
+/* A spurious data-ready pulse halfway through every period reaches the ADIS IMU's driver, which
+ * reads on it, finds ND clear (no new sample behind it) and does not hand the old sample out
+ * again: 16 samples, each with a new time stamp one period after the last. */
+static void test_extra_data_ready(void)
+{
+    struct sim_fault_arg arg = sim_fault_default(SIM_FAULT_EXTRA_DATA_READY);
+    struct adis_imu_sample s;
+    uint64_t last = 0;
+    unsigned k, fresh = 0;
+    REQUIRE(imu_setup() == INC_OK);
+    REQUIRE(imu_init() == INC_OK);
+    CHECK_OK(sim_part_inject(&bench.part, SIM_FAULT_EXTRA_DATA_READY, &arg));
+    for (k = 0; k < 16u; k++) {
+        int err = adis_imu_wait_ready(&imu, 0, NULL);
+        if (err == INC_OK) {
+            err = adis_imu_read_sample(&imu, &s);
+        }
+        if (err == INC_ERR_STALE) { /* the spurious edge: the next one is the sample */
+            err = adis_imu_wait_ready(&imu, 0, NULL);
+            if (err == INC_OK) {
+                err = adis_imu_read_sample(&imu, &s);
+            }
+        }
+        CHECK_OK(err);
+        if (err == INC_OK && s.t_ns > last) {
+            fresh++;
+            last = s.t_ns;
+        }
+    }
+    CHECK_EQ_INT((int)fresh, 16);
+    CHECK(bench.m.adis_imu.dr_extra_pulses >= 15u);
+    CHECK(imu.stale_reads >= 10u); /* it did read on the spurious edges */
+    sim_part_clear_all(&bench.part);
+    no_violations();
+}
+
 /* Faults clear: a part whose faults are all cleared serves the driver normally again. */
 static void test_faults_clear(void)
 {
@@ -716,6 +755,7 @@ int main(void)
     UNIT_RUN(test_sweep_adis_imu);
     UNIT_RUN(test_sweep_sca3000);
     UNIT_RUN(test_fault_matrix);
+    UNIT_RUN(test_extra_data_ready);
     UNIT_RUN(test_faults_clear);
     return unit_report();
 }

@@ -171,6 +171,7 @@ std::vector<Case> matrix(bool full)
             add(v, p, FMX_BIT_FLIP, 0.0, 4.0, b);
         add(v, p, FMX_CORRUPT_FRAME, 0.0, 4.0);
         add(v, p, FMX_MISSED_DR, 0.1, 4.0);
+        add(v, p, FMX_EXTRA_DR, 0.0, 4.0);
         add(v, p, FMX_DEVICE_ERROR, 0.0, 4.0);
         add(v, p, FMX_WRONG_ID, 0.0, 0.0);
         const std::vector<uint8_t> bits = adis ? std::vector<uint8_t>{0, 1, 2, 3, 4, 5, 8, 12}

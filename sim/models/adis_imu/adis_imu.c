@@ -251,6 +251,20 @@ static void dr_off(void *arg, uint64_t now)
     }
 }
 
+/* The injected spurious pulse (SIM_FAULT_EXTRA_DATA_READY): the line pulses as for a sample,
+ * but no new sample is behind it. */
+static void dr_extra(void *arg, uint64_t now)
+{
+    struct sim_adis_imu *m = arg;
+    m->dr_extra_ev = 0;
+    if (!m->dr_extra || m->dr_pin == SIM_ADIS_IMU_NO_PIN || m->dr_off_ev > 0 || m->dr_suppressed) {
+        return;
+    }
+    sim_pinbus_device_drive(m->cfg.bus, (unsigned)m->dr_dev, m->dr_pin, m->dr_active_high);
+    m->dr_off_ev = sim_clock_schedule(m->clk, now + SIM_ADIS_IMU_DR_PULSE_NS, dr_off, m);
+    m->dr_extra_pulses++;
+}
+
 static void dr_pulse(struct sim_adis_imu *m, uint64_t now)
 {
     if (m->dr_pin == SIM_ADIS_IMU_NO_PIN || m->dr_off_ev > 0 || m->dr_suppressed) {
@@ -259,6 +273,12 @@ static void dr_pulse(struct sim_adis_imu *m, uint64_t now)
     sim_pinbus_device_drive(m->cfg.bus, (unsigned)m->dr_dev, m->dr_pin, m->dr_active_high);
     m->dr_off_ev = sim_clock_schedule(m->clk, now + SIM_ADIS_IMU_DR_PULSE_NS, dr_off, m);
     m->dr_pulses++;
+    if (m->dr_extra && m->dr_extra_ev == 0) {
+        m->dr_extra_ev = sim_clock_schedule(m->clk, now + m->period_16 / 32u, dr_extra, m);
+        if (m->dr_extra_ev < 0) {
+            m->dr_extra_ev = 0;
+        }
+    }
 }
 
 /* ---- Bartlett filter (docs/sensor-facts.md §3.4 SENS_AVG; [ADI-IMU-QS]) ---- */
@@ -992,6 +1012,7 @@ static int p_fault(void *model, enum sim_fault f, const struct sim_fault_arg *a,
         }
         return INC_OK;
     case SIM_FAULT_NO_DATA_READY: m->dr_suppressed = on; return INC_OK;
+    case SIM_FAULT_EXTRA_DATA_READY: m->dr_extra = on; return INC_OK;
     case SIM_FAULT_DEVICE_ERROR:
         m->fault_diag = on ? (a->mask != 0u ? a->mask : FAULT_DIAG_DEFAULT) : 0u;
         return INC_OK;

@@ -228,6 +228,32 @@ static void schedule_sampling(struct sim_sca3000 *m, uint64_t t)
     m->sample_handle = h > 0 ? h : 0;
 }
 
+#define INT_EXTRA_NS 1000u /* width of an injected spurious INT pulse */
+
+/* The injected spurious pulse (SIM_FAULT_EXTRA_DATA_READY): INT active for INT_EXTRA_NS, then
+ * back to the level the ring buffer gives; no new sample behind it. */
+static void int_extra_end(void *arg, uint64_t t)
+{
+    struct sim_sca3000 *m = arg;
+    (void)t;
+    m->int_extra_ev = 0;
+    update_int_pin(m);
+}
+
+static void int_extra_start(void *arg, uint64_t t)
+{
+    struct sim_sca3000 *m = arg;
+    int h;
+    m->int_extra_ev = 0;
+    if (!m->int_extra || m->int_dev < 0 || !m->attached || m->int_suppressed) {
+        return;
+    }
+    sim_pinbus_device_drive(m->bus, (unsigned)m->int_dev, m->int_pin, (m->int_mask & 0x01u) != 0u);
+    m->int_extra_pulses++;
+    h = sim_clock_schedule(m->bus->clk, t + INT_EXTRA_NS, int_extra_end, m);
+    m->int_extra_ev = h > 0 ? h : 0;
+}
+
 static void sample_event(void *arg, uint64_t t)
 {
     struct sim_sca3000 *m = arg;
@@ -237,6 +263,11 @@ static void sample_event(void *arg, uint64_t t)
     }
     take_sample(m, t);
     schedule_sampling(m, t + m->sample_period_ns);
+    if (m->int_extra && m->int_extra_ev == 0) {
+        const int h = sim_clock_schedule(m->bus->clk, t + m->sample_period_ns / 2u, int_extra_start,
+                                         m);
+        m->int_extra_ev = h > 0 ? h : 0;
+    }
 }
 
 /* ---- SPI ---------------------------------------------------------------------------------- */
@@ -711,6 +742,7 @@ static int p_fault(void *model, enum sim_fault f, const struct sim_fault_arg *a,
         m->int_suppressed = on;
         update_int_pin(m);
         return INC_OK;
+    case SIM_FAULT_EXTRA_DATA_READY: m->int_extra = on; return INC_OK;
     case SIM_FAULT_DEVICE_ERROR:
         if (on) {
             m->faults |= SIM_SCA3000_FAULT_EEPROM;

@@ -59,6 +59,8 @@ enum fmx_fault {
     FMX_SUPPLY,        /* supply at amp V from the onset */
     FMX_TEMP_STUCK,    /* temperature reads amp degC from the onset (the car is at another) */
     FMX_TEMP_RANGE,    /* temperature reads amp degC (outside the part's range) */
+    FMX_EXTRA_DR,      /* a spurious data-ready pulse halfway through every period from the
+                          onset (no new sample behind it) */
     FMX_FAULTS
 };
 

@@ -49,6 +49,8 @@ enum sim_fault {
     SIM_FAULT_BIAS_JUMP,           /* + arg.value on the channels of arg.channels (physics) */
     SIM_FAULT_NOISE_BURST,         /* + arg.value x N(0,1) for arg.duration_ns (physics) */
     SIM_FAULT_SATURATION,          /* the channels of arg.channels at arg.value (physics) */
+    SIM_FAULT_EXTRA_DATA_READY,    /* a spurious data-ready / INT pulse halfway through every
+                                      sample period, no new sample behind it (model) */
     SIM_FAULT_COUNT
 };
 

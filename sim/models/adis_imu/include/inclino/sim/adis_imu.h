@@ -114,6 +114,9 @@ struct sim_adis_imu {
     struct sim_error_model error_hook;
     /* injected faults (sim/part.h, sim_adis_imu_part) */
     bool dr_suppressed;         /* no data-ready pulses */
+    bool dr_extra;              /* a spurious pulse halfway through every sample period */
+    int dr_extra_ev;            /* its pending event, 0 when none */
+    uint32_t dr_extra_pulses;   /* spurious pulses given */
     uint16_t fault_diag;        /* DIAG_STAT bits held on (device error) */
     uint16_t true_prod_id;      /* PROD_ID while a wrong identity is shown */
     struct sim_stuck_bit stuck; /* an injected stuck data bit */

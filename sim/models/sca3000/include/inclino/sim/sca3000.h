@@ -160,6 +160,9 @@ struct sim_sca3000 {
 
     /* injected faults (sim/part.h, sim_sca3000_part) */
     bool int_suppressed;        /* the INT line never goes active */
+    bool int_extra;             /* a spurious INT pulse halfway through every sample period */
+    int int_extra_ev;           /* its pending event (pulse or end), 0 when none */
+    uint32_t int_extra_pulses;  /* spurious pulses given */
     bool wrong_id;              /* REVID reads revid + 1 */
     struct sim_stuck_bit stuck; /* an injected stuck data bit */
 
