@@ -21,6 +21,37 @@ static const uint8_t chan_addr[2][ADIS_IMU_CH_COUNT] = {
     {0x02, 0x04, 0x06, 0x08, 0x0A, 0x0C, 0x0E, 0x10, 0x12, 0x14, 0x16, 0, 0, 0x18},
 };
 
+/* The inverse for the burst: burst word i (register 0x02 + 2 i) -> channel, per family
+ * (BURST_NONE: no channel). adis_imu_init checks it against chan_addr. */
+#define BURST_NONE 0xFFu
+#define BURST_MAX 12u
+static const uint8_t burst_chan[2][BURST_MAX] = {
+    {0, 1, 2, 3, 4, 5, 6, 10, 11, 12, 13, BURST_NONE},
+    {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 13},
+};
+
+/* burst_chan is the inverse of chan_addr for every word of a burst. */
+static bool burst_map_ok(void)
+{
+    unsigned f, i, ch;
+    for (f = 0; f < 2u; f++) {
+        for (i = 0; i < BURST_MAX; i++) {
+            const uint8_t addr = (uint8_t)(0x02u + 2u * i);
+            unsigned want = BURST_NONE;
+            for (ch = 0; ch < (unsigned)ADIS_IMU_CH_COUNT; ch++) {
+                if (chan_addr[f][ch] == addr) {
+                    want = ch;
+                    break;
+                }
+            }
+            if (burst_chan[f][i] != want) {
+                return false;
+            }
+        }
+    }
+    return true;
+}
+
 /* ---- timing ---- */
 
 static void timing_for(bool low_power, bool burst, struct spi_timing *t)
@@ -204,6 +235,9 @@ int adis_imu_init(struct adis_imu *dev, const struct adis_imu_cfg *cfg)
     err = check_cfg(cfg);
     if (err != INC_OK) {
         return err;
+    }
+    if (!burst_map_ok()) {
+        return INC_ERR_STATE; /* the driver's own tables disagree: never a wrong channel */
     }
     dev->cfg = *cfg;
     /* Start at the low-power limits: valid whatever mode the part is in (Linux does the same,
@@ -449,14 +483,10 @@ int adis_imu_read_sample(struct adis_imu *dev, struct adis_imu_sample *out)
     }
     dev->bursts++;
     /* Burst words are the output registers in address order from SUPPLY_OUT (0x02). */
-    for (i = 0; i < n; i++) {
-        const uint8_t addr = (uint8_t)(0x02u + 2u * i);
-        unsigned ch;
-        for (ch = 0; ch < (unsigned)ADIS_IMU_CH_COUNT; ch++) {
-            if (chan_addr[family(dev)][ch] == addr) {
-                sample_put(dev, out, ch, rx[1u + i]);
-                break;
-            }
+    for (i = 0; i < n && i < BURST_MAX; i++) {
+        const uint8_t ch = burst_chan[family(dev)][i];
+        if (ch != BURST_NONE) {
+            sample_put(dev, out, ch, rx[1u + i]);
         }
     }
     /* A live part always reports a supply in range, so n equal 0x0000/0xFFFF words are a bus
