@@ -100,7 +100,7 @@ static struct app app;
 static struct app_face faces[CAL_FACES];
 static struct calrec rec;
 
-static int sensor_up(const struct epb_image_board *b)
+int epb_image_adis_up(struct adis_imu *dev, const struct epb_image_board *b)
 {
     struct adis_imu_cfg ic;
     int err;
@@ -113,9 +113,9 @@ static int sensor_up(const struct epb_image_board *b)
     ic.dr_active_low = false;
     ic.reset_at_init = false;
     ic.self_test_at_init = true;
-    err = adis_imu_init(&imu, &ic);
+    err = adis_imu_init(dev, &ic);
     if (err == INC_OK) {
-        err = adis_imu_set_filter(&imu, 0u, ADIS_IMU_RANGE_300);
+        err = adis_imu_set_filter(dev, 0u, ADIS_IMU_RANGE_300);
     }
     return err;
 }
@@ -167,7 +167,7 @@ void epb_image_run_on(const struct epb_image_board *board)
     (void)app_cfg_default(&cfg, adis_imu_sample_rate_msps(ADIS_IMU_SMPL_PRD_DEFAULT));
     for (;;) {
         unsigned i;
-        if (sensor_up(board) != INC_OK ||
+        if (epb_image_adis_up(&imu, board) != INC_OK ||
             calstore_init(&store, board->store != NULL ? board->store : epb_image_no_flash()) !=
                 INC_OK ||
             app_init(&app, &cfg, &sensor, &store) != INC_OK) {

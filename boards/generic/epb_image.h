@@ -6,6 +6,7 @@
 #ifndef INCLINO_EPB_IMAGE_H
 #define INCLINO_EPB_IMAGE_H
 
+#include "inclino/adis_imu.h"
 #include "inclino/calstore.h"
 #include "inclino/hal.h"
 #include "inclino/spi.h"
@@ -23,6 +24,11 @@ struct epb_image_board {
     void (*per_result)(void);
     const struct calstore_config *store;
 };
+
+/* The ADIS part of a board up as the images run it: any 1636x/1640x variant on the board's SPI
+ * bus, chip select and data-ready (DIO1, active high), self-test at init, no filter, +-300 deg/s
+ * (the application averages). 0 or the driver's error. */
+int epb_image_adis_up(struct adis_imu *dev, const struct epb_image_board *b);
 
 /* The placeholder flash of the calibration store: two 1 KiB slots whose every access fails with
  * INC_ERR_IO (the application runs uncalibrated and flags it). */

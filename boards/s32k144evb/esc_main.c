@@ -22,6 +22,7 @@
 #include "inclino/s32k_scg.h"
 #include "inclino/s32k_wdog.h"
 #include "inclino/sensor.h"
+#include "epb_image.h"
 #include "s32k_image.h"
 
 /* The speed mailbox is read every ESC_SPEED_EVERY samples (19.5 ms at 819.2 SPS: the sender's
@@ -49,25 +50,19 @@ static struct can_speed_rx srx;
 static int up(void)
 {
     const struct s32k_board *b = &s32k_image_board;
-    struct adis_imu_cfg ic;
+    struct epb_image_board eb;
     struct s32k_flexcan_cfg cc;
     static struct app_cfg acfg;
     static struct app_esc_cfg ecfg;
     const uint32_t rate = adis_imu_sample_rate_msps(ADIS_IMU_SMPL_PRD_DEFAULT);
     int err;
-    ic.hal = &b->hal;
-    ic.bus = b->spi;
-    ic.cs = b->desc->pins.cs_imu;
-    ic.variant = (uint8_t)ADIS_IMU_ANY;
-    ic.dr_pin = b->desc->pins.dr_imu;
-    ic.dr_line = (uint8_t)ADIS_IMU_DR_DIO1;
-    ic.dr_active_low = false;
-    ic.reset_at_init = false;
-    ic.self_test_at_init = true;
-    err = adis_imu_init(&imu, &ic);
-    if (err == INC_OK) {
-        err = adis_imu_set_filter(&imu, 0u, ADIS_IMU_RANGE_300);
-    }
+    eb.hal = &b->hal;
+    eb.spi = b->spi;
+    eb.cs = b->desc->pins.cs_imu;
+    eb.dr = b->desc->pins.dr_imu;
+    eb.per_result = NULL;
+    eb.store = NULL;
+    err = epb_image_adis_up(&imu, &eb);
     if (err == INC_OK) {
         err = calstore_init(&store, s32k_image_store(&s32k_board_s32k144evb));
     }
