@@ -81,12 +81,13 @@ static int set_mode_timing(struct adis_imu *dev, bool low_power)
 
 static int resync(struct adis_imu *dev);
 
-/* Wait until the part has finished the last command. */
+/* Wait until the part has finished the last command. 0 = nothing pending: once the time has
+ * passed it is cleared, so the sample path does not read the clock for it. */
 static void wait_busy(struct adis_imu *dev)
 {
-    const struct hal *hal = dev->cfg.hal;
-    if (hal_now_ns(hal) < dev->busy_until_ns) {
-        hal_delay_until(hal, dev->busy_until_ns);
+    if (dev->busy_until_ns != 0u) {
+        hal_delay_until(dev->cfg.hal, dev->busy_until_ns);
+        dev->busy_until_ns = 0u;
     }
 }
 

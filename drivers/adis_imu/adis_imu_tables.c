@@ -247,7 +247,9 @@ bool adis_imu_smpl_prd_is_low_power(uint8_t smpl_prd)
 
 /*
  * Each conversion forms the exact rational as an int64 numerator over a uint32 denominator and
- * lets fx_div64 round it (ties away from zero) and saturate it to int32.
+ * lets fx_muldiv round it (ties away from zero) and saturate it to int32: the same result as
+ * fx_div64 of the full product, with 32-bit divisions for the register widths (the M0+ reads
+ * seven conversions per sample).
  * Inputs beyond any register width are clamped so the products below cannot overflow int64.
  */
 static int64_t clamp_counts(int32_t c)
@@ -280,7 +282,7 @@ int adis_imu_gyro_dps_from_counts(int32_t counts, enum adis_imu_range range, int
     case ADIS_IMU_RANGE_75: den = 40u; break;
     default: *dps_q16 = 0; return INC_ERR_INVAL;
     }
-    *dps_q16 = fx_div64(clamp_counts(counts) * 32768, den);
+    *dps_q16 = fx_muldiv(clamp_counts(counts), 32768u, den);
     return INC_OK;
 }
 
@@ -293,7 +295,7 @@ int adis_imu_accel_g_from_counts(int32_t counts, uint32_t lsb_ug, int32_t *g_q16
         *g_q16 = 0;
         return INC_ERR_INVAL;
     }
-    *g_q16 = fx_div64(clamp_counts(counts) * (int64_t)lsb_ug * 65536, 1000000u);
+    *g_q16 = fx_muldiv(clamp_counts(counts) * (int64_t)lsb_ug, 1024u, 15625u); /* 65536 / 1e6 */
     return INC_OK;
 }
 
@@ -309,23 +311,23 @@ int adis_imu_temp_c_from_counts(int32_t counts, enum adis_imu_family f, int32_t 
     case ADIS_IMU_FAMILY_1640X: mc_per_lsb = 140; break;
     default: *c_q16 = 0; return INC_ERR_INVAL;
     }
-    *c_q16 = fx_div64((25000 + clamp_counts(counts) * mc_per_lsb) * 65536, 1000u);
+    *c_q16 = fx_muldiv(25000 + clamp_counts(counts) * mc_per_lsb, 8192u, 125u); /* 65536 / 1000 */
     return INC_OK;
 }
 
 int32_t adis_imu_supply_v_from_counts(int32_t counts)
 {
-    return fx_div64(clamp_counts(counts) * 2418 * 65536, 1000000u); /* 2.418 mV */
+    return fx_muldiv(clamp_counts(counts) * 2418, 1024u, 15625u); /* 2.418 mV: 65536 / 1e6 */
 }
 
 int32_t adis_imu_magn_gauss_from_counts(int32_t counts)
 {
-    return fx_div64(clamp_counts(counts) * 65536, 2000u); /* 0.5 mgauss */
+    return fx_muldiv(clamp_counts(counts), 65536u, 2000u); /* 0.5 mgauss */
 }
 
 int32_t adis_imu_aux_v_from_counts(int32_t counts)
 {
-    return fx_div64(clamp_counts(counts) * 8058 * 65536, 10000000u); /* 805.8 uV */
+    return fx_muldiv(clamp_counts(counts) * 8058, 4096u, 625000u); /* 805.8 uV: 65536 / 1e7 */
 }
 
 int16_t adis_imu_gyro_off_counts_from_dps(int32_t dps_q16, bool *saturated)

@@ -144,9 +144,13 @@ static void waiter_arm(const struct spi_lpspi *lp, struct waiter *w, uint64_t bu
     w->deadline = hal_now_ns(lp->cfg.hal) + budget_ns + lp->cfg.timeout_ns;
 }
 
+/* The clock is read every SPI_LPSPI_CLOCK_EVERY polls only (a poll is two register reads, a
+ * clock read on the M0+ about 60 instructions): a timeout is seen at most that many polls late. */
 static bool waiter_expired(const struct spi_lpspi *lp, struct waiter *w)
 {
-    return ++w->polls > SPI_LPSPI_POLL_LIMIT || hal_now_ns(lp->cfg.hal) > w->deadline;
+    ++w->polls;
+    return w->polls > SPI_LPSPI_POLL_LIMIT ||
+           ((w->polls % SPI_LPSPI_CLOCK_EVERY) == 0u && hal_now_ns(lp->cfg.hal) > w->deadline);
 }
 
 static bool same_timing(const struct spi_timing *a, const struct spi_timing *b)
@@ -291,8 +295,10 @@ static int lp_transfer(void *ctx, struct spi_dev *dev, const uint16_t *tx, uint1
         }
     }
 
+    /* The end of the transfer keeps the words' deadline (it is past their bus time by at least
+     * one word's time + cfg.timeout_ns when the words came late): no clock read here. */
+    w.polls = 0;
     if (end_pending) {
-        waiter_arm(lp, &w, word_ns);
         while (LPSPI_FSR_TXCOUNT(rd(lp, LPSPI_FSR)) >= lp->fifo_words) {
             if (waiter_expired(lp, &w)) {
                 return fail(lp, INC_ERR_TIMEOUT);
@@ -300,7 +306,6 @@ static int lp_transfer(void *ctx, struct spi_dev *dev, const uint16_t *tx, uint1
         }
         wr(lp, LPSPI_TCR, tcr & ~LPSPI_TCR_CONT);
     }
-    waiter_arm(lp, &w, word_ns);
     for (;;) {
         const uint32_t sr = rd(lp, LPSPI_SR);
         if ((sr & (LPSPI_SR_TEF | LPSPI_SR_REF)) != 0u) {

@@ -382,6 +382,36 @@ static void test_divide64(void)
     CHECK_EQ_INT(badodd, 0);
 }
 
+/* fx_muldiv is fx_div64 of the product, bit for bit, on each of its paths. */
+static void test_muldiv(void)
+{
+    long k;
+    uint32_t st = 0x3D1Fu;
+    unsigned long bad = 0;
+    CHECK_EQ_INT(fx_muldiv(0, 5u, 3u), 0);
+    CHECK_EQ_INT(fx_muldiv(5, 1u, 0u), INT32_MAX);
+    CHECK_EQ_INT(fx_muldiv(-5, 1u, 0u), INT32_MIN);
+    CHECK_EQ_INT(fx_muldiv(1, 1u, 2u), 1); /* ties away from zero */
+    CHECK_EQ_INT(fx_muldiv(-1, 1u, 2u), -1);
+    CHECK_EQ_INT(fx_muldiv(8191, 32768u, 10u), 26840269); /* the ADIS gyro LSB */
+    CHECK_EQ_INT(fx_muldiv(-8192, 32768u, 10u), -26843546);
+    CHECK_EQ_INT(fx_muldiv(65535, 65535u, 1u), INT32_MAX); /* one-division path saturates */
+    CHECK_EQ_INT(fx_muldiv(-65535, 65535u, 1u), INT32_MIN);
+    CHECK_EQ_INT(fx_muldiv(0xFFFFFFFFLL, 1u, 2u), INT32_MAX); /* two-division path saturates */
+    CHECK_EQ_INT(fx_muldiv(-0xFFFFFFFFLL, 1u, 2u), INT32_MIN);
+    CHECK_EQ_INT(fx_muldiv(0xFFFFFFFFLL, 1u, 3u), 1431655765);
+    CHECK_EQ_INT(fx_muldiv(-(1LL << 32) + 1, 0x7FFFFFFFu, 0xFFFFFFFFu), -INT32_MAX); /* fallback */
+    for (k = 0; k < N_RANDOM; k++) {
+        const int64_t xm = (int64_t)((((uint64_t)unit_rand32(&st) << 32) | unit_rand32(&st)) >>
+                                     (32u + unit_rand32(&st) % 33u)); /* |x| < 2^32 */
+        const int64_t x = (unit_rand32(&st) & 1u) ? -xm : xm;
+        const uint32_t m = (unit_rand32(&st) >> 1) >> (unit_rand32(&st) % 32u); /* < 2^31 */
+        const uint32_t d = unit_rand32(&st) >> (unit_rand32(&st) % 32u);
+        if (fx_muldiv(x, m, d) != fx_div64(x * (int64_t)m, d)) bad++;
+    }
+    CHECK_EQ_INT((long)bad, 0);
+}
+
 static void test_reciprocal(void)
 {
     int32_t r = 0;
@@ -522,6 +552,7 @@ int main(void)
     UNIT_RUN(test_multiply);
     UNIT_RUN(test_divide);
     UNIT_RUN(test_divide64);
+    UNIT_RUN(test_muldiv);
     UNIT_RUN(test_reciprocal);
     UNIT_RUN(test_accumulate);
     return unit_report();

@@ -2,7 +2,7 @@
  * test_s32k_port.c - the S32K1 port's own code (_sim build) against the register models:
  * PORT/GPIO drive and read the pin bus, the pin interrupt reaches an attached callback through
  * PCR.IRQC/ISF and the simulated NVIC, the LPIT0 time base advances with register accesses,
- * delays are never short, irq_wait times out at its deadline, and the watchdog is configured
+ * delays are never short, the tick-to-ns and ns-to-tick conversions are exact, irq_wait times out at its deadline, and the watchdog is configured
  * and refreshed without a bite. Runs on the host and under QEMU.
  */
 #include <string.h>
@@ -176,10 +176,75 @@ static void test_time(void)
     CHECK((core.wdog_cs & S32K_WDOG_CS_EN) != 0u);
 }
 
+/* ceil(ns * 3 / 125), the ticks of at least ns at 24 MHz, with a 64-bit intermediate. */
+static uint64_t ticks_ref(uint32_t ns)
+{
+    return ((uint64_t)ns * 3u + 124u) / 125u;
+}
+
+static void check_conv(uint32_t x, unsigned long *bad)
+{
+    if (s32k_time_div3(x) != x / 3u || s32k_time_div125(x) != x / 125u ||
+        s32k_time_ns_to_ticks(NULL, x) != ticks_ref(x)) {
+        (*bad)++;
+    }
+}
+
+/* The division-free conversions of the time base are the divisions, for every input class. */
+static void test_time_conversions(void)
+{
+    unsigned long bad = 0;
+    uint32_t st = 0x71CCu, i;
+    uint64_t ns;
+    for (i = 0; i < 4096u; i++) { /* both ends of the range */
+        check_conv(i, &bad);
+        check_conv(0xFFFFFFFFu - i, &bad);
+    }
+    for (i = 0; i < 32u; i++) { /* around the powers of two, where a reciprocal errs first */
+        const uint32_t p = 1u << i;
+        uint32_t k;
+        for (k = 0; k < 8u; k++) {
+            check_conv(p + k, &bad);
+            check_conv(p - k, &bad);
+        }
+    }
+    for (i = 0; i < 300000u; i++) {
+        const uint32_t x = unit_rand32(&st) >> (unit_rand32(&st) % 32u);
+        check_conv(x, &bad);
+    }
+    CHECK_EQ_INT((long)bad, 0);
+    CHECK_EQ_INT((long)s32k_time_ns_to_ticks(NULL, 0u), 0);
+    CHECK_EQ_INT((long)s32k_time_ns_to_ticks(NULL, 1u), 1);
+    CHECK_EQ_INT((long)s32k_time_ns_to_ticks(NULL, 125u), 3);
+    CHECK_EQ_INT((long)s32k_time_ns_to_ticks(NULL, 126u), 4);
+
+    /* The running sum stays exactly floor(ticks * 125 / 3): short reads, then one gap longer
+     * than three conversion steps (a step is 2^25 ticks = 1.4 s) and one of nearly 2^32 ticks. */
+    setup();
+    for (i = 0; i < 100u; i++) {
+        uint64_t ticks;
+        hal_delay_ns(&board.hal, 1000u + 37u * i);
+        ticks = s32k_time_ticks(&board.port.time);
+        ns = s32k_time_now_ns(&board.port.time);
+        CHECK(ns == board.port.time.ticks * 125u / 3u);
+        CHECK(ticks <= board.port.time.ticks);
+    }
+    /* A gap of 3 steps and a bit without a read (white box: `last` moved back by that much). */
+    board.port.time.last += 3u * S32K_TIME_CHUNK + 12345u;
+    ns = s32k_time_now_ns(&board.port.time);
+    CHECK(ns == board.port.time.ticks * 125u / 3u);
+    CHECK_EQ_INT((long)board.port.time.rem, (long)(board.port.time.ticks * 125u % 3u));
+    board.port.time.last += 0xFFFF0000u; /* nearly a whole wrap (179 s) unread */
+    ns = s32k_time_now_ns(&board.port.time);
+    CHECK(ns == board.port.time.ticks * 125u / 3u);
+    CHECK(board.port.time.ticks > 3u * S32K_TIME_CHUNK);
+}
+
 int main(void)
 {
     UNIT_RUN(test_pins);
     UNIT_RUN(test_irq);
     UNIT_RUN(test_time);
+    UNIT_RUN(test_time_conversions);
     return unit_report();
 }

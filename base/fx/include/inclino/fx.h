@@ -237,6 +237,13 @@ static inline int fx_recip_q30(fx_q30_t x, fx_q30_t *r)
  * LSB when not saturated. The same division as fx_sum_mean. */
 int32_t fx_div64(int64_t num, uint32_t den);
 
+/* round(x * m / d), ties away from zero, saturated to int32: fx_div64(x * m, d), bit for bit, for
+ * |x| < 2^32 and m < 2^31 (so x * m fits int64); d == 0 as fx_div64. |error| <= 0.5 LSB when not
+ * saturated. When |x| < 2^32 and (d - 1) * m < 2^32 it needs only 32-bit divisions (two), so a
+ * counts-to-Q16 scaling costs tens of instructions on the M0+ instead of a 64-bit division;
+ * otherwise it is fx_div64. */
+int32_t fx_muldiv(int64_t x, uint32_t m, uint32_t d);
+
 /* ---- Accumulation ------------------------------------------------------------------------- */
 
 /* Running sum of int32 samples (any one Q format) in int64. Up to FX_SUM_MAX_COUNT samples can

@@ -382,7 +382,7 @@ struct adis_imu {
     uint16_t msc_ctrl;
     uint16_t last_diag;     /* last DIAG_STAT read (it clears on read [U]) */
     uint16_t init_diag;     /* DIAG_STAT read at init (power-up flags), not an error */
-    uint64_t busy_until_ns; /* the part ignores the bus until then */
+    uint64_t busy_until_ns; /* the part ignores the bus until then; 0 once passed */
     struct sensor_dr dr;    /* data-ready edges seen and consumed (wait_dr) */
     /* statistics */
     uint32_t bursts, reg_reads, bus_errors, device_errors, stale_reads, timeouts;

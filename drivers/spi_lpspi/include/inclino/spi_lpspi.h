@@ -44,10 +44,11 @@
  *   INC_ERR_TIMING   the timing does not fit the LPSPI counters at this clock;
  *   INC_ERR_BUSY     the module was still busy (SR MBF) before a transfer started;
  *   INC_ERR_BUS      SR TEF (TX FIFO underrun) or REF (RX FIFO overflow) was set;
- *   INC_ERR_TIMEOUT  the words did not all come within twice their expected bus time +
- *                    cfg.timeout_ns, or the end of the transfer within a word's time +
- *                    cfg.timeout_ns (or SPI_LPSPI_POLL_LIMIT status reads or sleeps without
- *                    progress);
+ *   INC_ERR_TIMEOUT  the words and the end of the transfer (PCS negated) did not all come
+ *                    within twice the expected bus time of n + 1 words + cfg.timeout_ns
+ *                    (or SPI_LPSPI_POLL_LIMIT status reads or sleeps without
+ *                    progress); polls read the clock every SPI_LPSPI_CLOCK_EVERY-th time, so a
+ *                    timeout is seen up to that many status reads after its deadline;
  *   INC_ERR_UNSUPPORTED  PARAM reports a FIFO or PCS count this engine cannot use (init).
  */
 #ifndef INCLINO_SPI_LPSPI_H
@@ -67,6 +68,8 @@ extern "C" {
 #define SPI_LPSPI_PCS_COUNT 4u
 /* Status reads one wait may take before it is a timeout (a bound when no clock runs). */
 #define SPI_LPSPI_POLL_LIMIT 200000u
+/* Polls between two clock reads of a polling wait (the deadline check). */
+#define SPI_LPSPI_CLOCK_EVERY 8u
 /* Extra time over the expected bus time before a wait times out (cfg.timeout_ns == 0). */
 #define SPI_LPSPI_TIMEOUT_DEFAULT_NS 100000u
 

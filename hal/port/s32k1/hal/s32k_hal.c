@@ -215,7 +215,7 @@ int s32k_hal_init(struct s32k_hal *p, const struct s32k_hal_config *cfg, struct 
         return INC_ERR_NULL;
     }
     if ((cfg->part != S32K_PART_144 && cfg->part != S32K_PART_116) ||
-        cfg->core_hz < HAL_CYC_HZ_MIN || cfg->core_hz > HAL_CYC_HZ_MAX) {
+        cfg->core_hz < S32K_HAL_CORE_HZ_MIN || cfg->core_hz > S32K_HAL_CORE_HZ_MAX) {
         return INC_ERR_INVAL;
     }
     p->cfg = *cfg;

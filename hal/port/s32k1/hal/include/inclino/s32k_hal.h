@@ -38,6 +38,9 @@ extern "C" {
 #define S32K_HAL_IRQ_SLOTS 4u
 #define S32K_HAL_SPIN_MAX_NS 20000u /* delays and wait tails up to this spin */
 #define S32K_HAL_LOOP_CYCLES 3u     /* lower bound of one subs/bne turn on the M0+ and the M4 */
+/* Core clocks s32k_hal_init accepts: the family's range (S32K14x HSRUN 112 MHz at most). */
+#define S32K_HAL_CORE_HZ_MIN 1000000u
+#define S32K_HAL_CORE_HZ_MAX 112000000u
 
 struct s32k_hal_irq_slot {
     hal_pin_t pin; /* HAL_PIN_NONE when free */
