@@ -31,6 +31,7 @@ int app_esc_cfg_default(struct app_esc_cfg *cfg, uint32_t rate_mhz)
     cfg->veh_dyn_k = (fx_q16_t)((FX_Q16_ONE * 3 + 5) / 10);
     cfg->veh_min_mps = FX_Q16_INT(3);
     cfg->xchk_thr_g = 0;
+    cfg->veh_gyro_dps = 0;
     cfg->diag_shift = 8u;
     cfg->diag_persist_n = 41u;
     return INC_OK;
@@ -48,7 +49,8 @@ int app_esc_diag_default(struct app_esc_cfg *cfg)
     cfg->veh_dyn_k = (fx_q16_t)((FX_Q16_ONE * 3 + 5) / 10);
     cfg->veh_min_mps = FX_Q16_INT(3);
     cfg->xchk_thr_g = (fx_q16_t)((FX_Q16_ONE * 3 + 50) / 100); /* 0.03 g */
-    n = (fs + 10u) / 20u;                                      /* 0.05 s */
+    cfg->veh_gyro_dps = FX_Q16_INT(2);
+    n = (fs + 10u) / 20u; /* 0.05 s */
     cfg->diag_persist_n = n < 2u ? 2u : n;
     n = (fs * 5u + 8u) / 16u; /* 0.3125 s: the nearest power of two, geometrically */
     while (sh < 16u && (uint64_t)n * n >= ((uint64_t)1 << (2u * sh + 1u)))
@@ -81,8 +83,8 @@ int app_esc_init(struct app_esc *e, const struct app_esc_cfg *cfg)
         cfg->veh_margin_g > FX_Q16_ONE || cfg->veh_bound_k <= 0 || cfg->veh_bound_k > FX_Q16_ONE ||
         cfg->veh_dyn_k < 0 || cfg->veh_dyn_k > FX_Q16_ONE || cfg->veh_min_mps < 0 ||
         cfg->veh_min_mps > FX_Q16_INT(20) || cfg->xchk_thr_g < 0 || cfg->xchk_thr_g > FX_Q16_ONE ||
-        cfg->diag_shift < 1u || cfg->diag_shift > 16u || cfg->diag_persist_n < 1u ||
-        cfg->diag_persist_n > (1u << 24))
+        cfg->veh_gyro_dps < 0 || cfg->veh_gyro_dps > FX_Q16_INT(50) || cfg->diag_shift < 1u ||
+        cfg->diag_shift > 16u || cfg->diag_persist_n < 1u || cfg->diag_persist_n > (1u << 24))
         return INC_ERR_INVAL;
     err = att_init(&e->att, &cfg->att);
     if (err != INC_OK) return err;
@@ -110,6 +112,20 @@ int app_esc_init(struct app_esc *e, const struct app_esc_cfg *cfg)
     e->aux_acc[0] = e->aux_acc[1] = e->aux_acc[2] = 0;
     e->aux_valid = false;
     e->veh_level = e->xchk_level = e->veh_thr = 0;
+    e->veh_floor = 0;
+    {
+        /* G x (2^(shift+1) + persist) samples / rate: G <= 50 deg/s (2^21.7 Q16), the samples
+         * <= 2^24.01, x 2^16: < 2^62; rate >= 100 Hz (att_init) */
+        const int64_t n = ((int64_t)1 << (cfg->diag_shift + 1u)) + (int64_t)cfg->diag_persist_n;
+        const int64_t lag = ((int64_t)cfg->veh_gyro_dps * n * 65536 + cfg->att.sample_rate_hz / 2) /
+                            cfg->att.sample_rate_hz;
+        e->veh_lag_deg = lag > FX_DEG_180 ? FX_DEG_180 : (fx_q16_t)lag;
+    }
+    e->veh_inv_q16 = cfg->veh_bound_k >= FX_Q16_ONE
+                         ? 0u
+                         : (uint32_t)((((uint64_t)1 << 32) +
+                                       (uint64_t)(FX_Q16_ONE - cfg->veh_bound_k) - 1u) /
+                                      (uint64_t)(FX_Q16_ONE - cfg->veh_bound_k));
     e->diag = 0u;
     e->ready = true;
     return INC_OK;
@@ -173,6 +189,26 @@ static void update_mode(struct app_esc *e, struct app *a, const struct app_vehic
 /* pi/180 in Q16, rounded up: bound_deg x this >= sin(bound) in g per g */
 #define DEG2RAD_Q16_UP 1144
 
+/*
+ * The bound's floor (app_esc_cfg.veh_gyro_dps) for the threshold's part rest = margin + dyn x
+ * klev (Q16 g, [0, 33 g]): the error e (rad) at which e = rest + k e, e = rest / (1 - k), in
+ * degrees (x 180/pi rounded up: e is an upper bound), + the delay's share; at most 180 deg.
+ * rest x inv < 2^22 x 2^32; the product with 180/pi (Q16 3754937, rounded up) is taken in two
+ * steps so that no intermediate passes 2^63.
+ */
+#define RAD2DEG_Q16_UP 3754937
+static fx_q16_t veh_floor_of(const struct app_esc *e, fx_q16_t rest)
+{
+    uint64_t fg, fdeg;
+    if (e->cfg.veh_gyro_dps == 0) return 0;
+    if (e->veh_inv_q16 == 0u) return FX_DEG_180;
+    fg = ((uint64_t)(uint32_t)rest * e->veh_inv_q16 + 0xFFFFu) >> 16; /* Q16 rad, rounded up */
+    if (fg > ((uint64_t)FX_DEG_180 << 16) / RAD2DEG_Q16_UP) return FX_DEG_180;
+    fdeg = (fg * RAD2DEG_Q16_UP + 0xFFFFu) >> 16;
+    fdeg += (uint64_t)e->veh_lag_deg;
+    return fdeg > (uint64_t)FX_DEG_180 ? FX_DEG_180 : (fx_q16_t)fdeg;
+}
+
 /* The driving diagnostics of one sample (after att_update and the mode): see app_esc.h. */
 static void diag_step(struct app_esc *e, const struct sensor_sample *raw,
                       const struct att_sample *as, const struct app_vehicle *veh)
@@ -186,7 +222,7 @@ static void diag_step(struct app_esc *e, const struct sensor_sample *raw,
                                            raw->accel_g[0],  raw->accel_g[1],  raw->accel_g[2]};
         if (xcheck_flat_step(&e->flat, v) != 0u) e->diag |= APP_ESC_D_FLAT;
     }
-    e->veh_level = e->veh_thr = 0;
+    e->veh_level = e->veh_thr = e->veh_floor = 0;
     if (e->cfg.veh_margin_g != 0 && e->mode == APP_MODE_DRIVING && have_speed &&
         fx_abs(veh->speed_mps) >= e->cfg.veh_min_mps) {
         const fx_q16_t bound = att_get_bound(&e->att);
@@ -207,13 +243,14 @@ static void diag_step(struct app_esc *e, const struct sensor_sample *raw,
             klev = xcheck_mon_step(&e->kmon, kin, 1u, INT32_MAX, NULL); /* dv/dt only */
             /* bound <= 180 deg (2^23.5 Q16) x 1144 / 2^16 <= 3.15 g; klev <= 32 g; each
              * product with a Q16 factor <= 1 and their sum (+ margin <= 1 g) fit */
-            thr = e->cfg.veh_margin_g +
-                  (fx_q16_t)(((int64_t)bound * DEG2RAD_Q16_UP * e->cfg.veh_bound_k +
-                              ((int64_t)1 << 31)) >>
-                             32) +
-                  (fx_q16_t)(((int64_t)klev * e->cfg.veh_dyn_k + 32768) >> 16);
+            const fx_q16_t rest = e->cfg.veh_margin_g +
+                                  (fx_q16_t)(((int64_t)klev * e->cfg.veh_dyn_k + 32768) >> 16);
+            thr = rest + (fx_q16_t)(((int64_t)bound * DEG2RAD_Q16_UP * e->cfg.veh_bound_k +
+                                     ((int64_t)1 << 31)) >>
+                                    32);
             e->veh_level = xcheck_mon_step(&e->vmon, r, 3u, thr, &fail);
             e->veh_thr = thr;
+            e->veh_floor = veh_floor_of(e, rest);
             if (fail) e->diag |= APP_ESC_D_VEH;
             e->v_prev = veh->speed_mps;
         } else if (!e->v_prev_ok) {
@@ -274,6 +311,7 @@ int app_esc_step(struct app_esc *e, struct app *a, const struct sensor_sample *s
         att_get_quat(&e->att, out->q);
         att_get_euler(&e->att, &out->roll_deg, &out->pitch_deg);
         out->bound_deg = att_get_bound(&e->att);
+        if (e->veh_floor > out->bound_deg) out->bound_deg = e->veh_floor; /* veh_gyro_dps */
         out->valid = att_get_valid(&e->att); /* with require_aiding: never without the speed */
         out->att_fault = att_get_status(&e->att);
         if (e->diag != 0u) out->valid = false; /* a latched driving diagnostic */

@@ -303,6 +303,65 @@ static void test_driving_diagnostics(void)
     CHECK_OK(app_esc_init(&esc, &ec));
 }
 
+/* The DRIVING bound's floor from the vehicle-level check (app_esc_cfg.veh_gyro_dps): while the
+ * check runs, the bound is max(att's bound, the error the check can leave undetected), that
+ * error computed here in double from the threshold the output reports; with veh_gyro_dps 0 it
+ * is att's bound. */
+static void floor_case(fx_q16_t gyro_dps, unsigned *n_checked)
+{
+    struct app_esc_cfg ec;
+    struct app_vehicle veh = {true, 0, 0};
+    struct sensor_sample s;
+    struct app_esc_output o;
+    const double w[3] = {0, 0, 0};
+    const double lag = gyro_dps / 65536.0 * (512.0 + 41.0) / 819.2; /* 2^(8+1) + 41 samples */
+    unsigned i;
+    bool have;
+    setup(&ec);
+    REQUIRE(app_esc_diag_default(&ec) == INC_OK);
+    CHECK_EQ_INT(ec.veh_gyro_dps, FX_Q16_INT(2));
+    ec.veh_gyro_dps = gyro_dps;
+    REQUIRE(app_esc_init(&esc, &ec) == INC_OK);
+    for (i = 0; i < 20u * 819u; i++) {
+        const double t = i / 819.2;
+        veh.speed_mps = t < 8.0 ? 0 : FX_Q16_INT(15);
+        sample(&s, 3.0, -2.0, w, 0.0);
+        REQUIRE(app_esc_step(&esc, &app, &s, INC_OK, &veh, &o, &have) == INC_OK);
+        if (!have || o.mode != APP_MODE_DRIVING || o.veh_thr_g == 0) continue;
+        {
+            const double b_att = att_get_bound(&esc.att) / 65536.0;
+            const double rest = o.veh_thr_g / 65536.0 - 0.5 * b_att * DEG;
+            const double floor_deg = gyro_dps == 0 ? 0.0 : rest / 0.5 / DEG + lag;
+            const double want = floor_deg > b_att ? floor_deg : b_att;
+            CHECK(fabs(o.bound_deg / 65536.0 - want) < 0.002);
+            if (gyro_dps != 0) {
+                /* at a steady speed: the margin's 15 mg alone is 1.72 deg */
+                CHECK(o.bound_deg / 65536.0 >= 0.015 / 0.5 / DEG + lag - 0.002);
+            }
+            (*n_checked)++;
+        }
+    }
+}
+
+static void test_bound_floor(void)
+{
+    struct app_esc_cfg ec;
+    unsigned n = 0u;
+    floor_case(FX_Q16_INT(2), &n);
+    CHECK(n > 800u); /* 12 s of outputs at about 100 Hz, the check running */
+    n = 0u;
+    floor_case(0, &n);
+    CHECK(n > 800u);
+    setup(&ec);
+    REQUIRE(app_esc_diag_default(&ec) == INC_OK);
+    ec.veh_gyro_dps = FX_Q16_INT(50) + 1;
+    CHECK_ERR(app_esc_init(&esc, &ec), INC_ERR_INVAL);
+    ec.veh_gyro_dps = -1;
+    CHECK_ERR(app_esc_init(&esc, &ec), INC_ERR_INVAL);
+    ec.veh_gyro_dps = FX_Q16_INT(50);
+    CHECK_OK(app_esc_init(&esc, &ec));
+}
+
 int main(void)
 {
     UNIT_RUN(test_modes);
@@ -310,5 +369,6 @@ int main(void)
     UNIT_RUN(test_gyro_correction);
     UNIT_RUN(test_bad_calls);
     UNIT_RUN(test_driving_diagnostics);
+    UNIT_RUN(test_bound_floor);
     return unit_report();
 }

@@ -94,6 +94,17 @@ struct app_esc_cfg {
                               offset-change terms, 10 mg each, + 5 x the low-passed noise of
                               both (ADIS 10 mg, SCA3000 5 mg rms per sample: 2.5 mg) + 7.5 mg
                               for their sampling skew and placement under vibration] */
+    fx_q16_t veh_gyro_dps;   /* the vehicle-level check's floor under the DRIVING bound: a gyro
+                              error (bias step or drift) tilts the estimate without any sign in
+                              the att filter's own bound, and the check only fails once the
+                              low-passed residual passes its threshold. While the check runs,
+                              the published bound is at least the error it can leave undetected:
+                              asin^-1 of (threshold - veh_bound_k x bound) / (1 - veh_bound_k)
+                              (the error at which the threshold would be passed, taken as
+                              radians: >= its asin), in degrees, + veh_gyro_dps x the check's
+                              delay (the low-pass's 2^(diag_shift+1) samples + diag_persist_n),
+                              for gyro errors up to veh_gyro_dps. 0: no floor, else
+                              (0, 50] deg/s [2: the fault matrix's bias step] */
     uint8_t diag_shift;      /* the residuals' two-stage low-pass, 2^-shift per sample and stage,
                               [1, 16] [8: 0.31 s per stage at 819.2 SPS, group delay 0.62 s] */
     uint32_t diag_persist_n; /* samples above the threshold that make a failure,
@@ -114,7 +125,8 @@ struct app_esc_output {
     bool valid;   /* DRIVING: att_get_valid; PARKED: the EPB result's validity */
     int32_t q[4]; /* DRIVING: sensor to earth, Q30 w x y z */
     fx_q16_t roll_deg, pitch_deg;
-    fx_q16_t bound_deg; /* DRIVING: 99.9 % inclination-error bound; PARKED: slope bound */
+    fx_q16_t bound_deg; /* DRIVING: 99.9 % inclination-error bound, at least the vehicle-level
+                           check's floor (veh_gyro_dps); PARKED: slope bound */
     uint8_t att_fault;  /* ATT_FAULT_* */
     uint8_t diag;       /* APP_ESC_D_* (DRIVING outputs; the latched bits in both modes) */
     fx_q16_t veh_level_g, xchk_level_g; /* the diagnostics' low-passed residuals now (Q16 g;
@@ -139,7 +151,10 @@ struct app_esc {
     fx_q16_t v_prev;     /* the previous sample's speed (v_prev_ok) */
     fx_q16_t aux_acc[3]; /* the second accelerometer's latest calibrated sample */
     fx_q16_t veh_level, xchk_level, veh_thr;
-    uint8_t diag; /* latched APP_ESC_D_* */
+    fx_q16_t veh_floor;   /* the bound's floor from the vehicle-level check now (0: none) */
+    fx_q16_t veh_lag_deg; /* veh_gyro_dps x the check's delay, Q16 deg */
+    uint32_t veh_inv_q16; /* 1 / (1 - veh_bound_k), Q16 (0: veh_bound_k = 1, no floor possible) */
+    uint8_t diag;         /* latched APP_ESC_D_* */
     bool v_prev_ok, aux_valid;
 };
 
