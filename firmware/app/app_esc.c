@@ -32,6 +32,7 @@ int app_esc_cfg_default(struct app_esc_cfg *cfg, uint32_t rate_mhz)
     cfg->veh_min_mps = FX_Q16_INT(3);
     cfg->xchk_thr_g = 0;
     cfg->veh_gyro_dps = 0;
+    cfg->xchk_margin_g = 0;
     cfg->diag_shift = 8u;
     cfg->diag_persist_n = 41u;
     return INC_OK;
@@ -50,7 +51,8 @@ int app_esc_diag_default(struct app_esc_cfg *cfg)
     cfg->veh_min_mps = FX_Q16_INT(3);
     cfg->xchk_thr_g = (fx_q16_t)((FX_Q16_ONE * 3 + 50) / 100); /* 0.03 g */
     cfg->veh_gyro_dps = FX_Q16_INT(2);
-    n = (fs + 10u) / 20u; /* 0.05 s */
+    cfg->xchk_margin_g = (fx_q16_t)((FX_Q16_ONE + 50) / 100); /* 0.01 g */
+    n = (fs + 10u) / 20u;                                     /* 0.05 s */
     cfg->diag_persist_n = n < 2u ? 2u : n;
     n = (fs * 5u + 8u) / 16u; /* 0.3125 s: the nearest power of two, geometrically */
     while (sh < 16u && (uint64_t)n * n >= ((uint64_t)1 << (2u * sh + 1u)))
@@ -69,6 +71,55 @@ int app_esc_set_aux_accel(struct app_esc *e, const fx_q16_t acc_g[3], bool valid
     return INC_OK;
 }
 
+/* pi/180 in Q16, rounded up: bound_deg x this >= sin(bound) in g per g */
+#define DEG2RAD_Q16_UP 1144
+
+/*
+ * The bound's floor (app_esc_cfg.veh_gyro_dps) for the threshold's part rest = margin + dyn x
+ * klev (Q16 g, [0, 33 g]): the error e (rad) at which e = rest + k e, e = rest / (1 - k), in
+ * degrees (x 180/pi rounded up: e is an upper bound), + the delay's share; at most 180 deg.
+ * rest x inv < 2^22 x 2^32; the product with 180/pi (Q16 3754937, rounded up) is taken in two
+ * steps so that no intermediate passes 2^63.
+ */
+#define RAD2DEG_Q16_UP 3754937
+static fx_q16_t veh_floor_of(const struct app_esc *e, fx_q16_t rest)
+{
+    uint64_t fg, fdeg;
+    if (e->cfg.veh_gyro_dps == 0) return 0;
+    if (e->veh_inv_q16 == 0u) return FX_DEG_180;
+    fg = ((uint64_t)(uint32_t)rest * e->veh_inv_q16 + 0xFFFFu) >> 16; /* Q16 rad, rounded up */
+    if (fg > ((uint64_t)FX_DEG_180 << 16) / RAD2DEG_Q16_UP) return FX_DEG_180;
+    fdeg = (fg * RAD2DEG_Q16_UP + 0xFFFFu) >> 16;
+    fdeg += (uint64_t)e->veh_lag_deg;
+    return fdeg > (uint64_t)FX_DEG_180 ? FX_DEG_180 : (fx_q16_t)fdeg;
+}
+
+/*
+ * The cross-check's term in the DRIVING bound (app_esc_cfg.xchk_margin_g), Q16 deg, for the
+ * estimate's up u (Q30, |u| = 1): T = thr + margin (Q16 g, <= 2 g); a bias b passes the check
+ * unseen while its x-y norm and |b_z| are both <= T, so |b| <= sqrt(2) T and its component
+ * across u is at most P = T (1 + s), s = sqrt(u_x^2 + u_y^2) (the sensor z axis's part across
+ * u); the tilt it makes, atan(P / (1 - |b|)) <= P / (1 - sqrt(2) T) rad, in degrees. Every
+ * step rounds up, so the result is >= the exact value, by at most about 3 LSB Q16 deg plus the
+ * 180/pi constant's 1.2e-6 relative; 180 deg when sqrt(2) T >= 1 g.
+ */
+#define SQRT2_Q16_UP 92682
+static fx_q16_t xchk_term_of(const struct app_esc *e, const int32_t up[3])
+{
+    const uint64_t t = (uint64_t)(uint32_t)e->cfg.xchk_thr_g + (uint32_t)e->cfg.xchk_margin_g;
+    const uint64_t s2 = (uint64_t)((int64_t)up[0] * up[0]) + (uint64_t)((int64_t)up[1] * up[1]);
+    uint64_t r, p, bsum, q, deg;
+    r = fx_isqrt64(s2); /* Q30: s2 <= 2^61 */
+    if (r * r < s2) r++;
+    p = (t * (((uint64_t)1 << 30) + r) + (((uint64_t)1 << 30) - 1u)) >> 30; /* Q16 g */
+    bsum = (t * SQRT2_Q16_UP + 0xFFFFu) >> 16;                              /* Q16 g */
+    if (bsum >= (uint64_t)FX_Q16_ONE) return FX_DEG_180;
+    q = ((p << 16) + ((uint64_t)FX_Q16_ONE - bsum) - 1u) / ((uint64_t)FX_Q16_ONE - bsum);
+    if (q > ((uint64_t)FX_DEG_180 << 16) / RAD2DEG_Q16_UP) return FX_DEG_180;
+    deg = (q * RAD2DEG_Q16_UP + 0xFFFFu) >> 16; /* Q16 deg */
+    return deg > (uint64_t)FX_DEG_180 ? FX_DEG_180 : (fx_q16_t)deg;
+}
+
 int app_esc_init(struct app_esc *e, const struct app_esc_cfg *cfg)
 {
     uint32_t rate_mhz;
@@ -83,8 +134,9 @@ int app_esc_init(struct app_esc *e, const struct app_esc_cfg *cfg)
         cfg->veh_margin_g > FX_Q16_ONE || cfg->veh_bound_k <= 0 || cfg->veh_bound_k > FX_Q16_ONE ||
         cfg->veh_dyn_k < 0 || cfg->veh_dyn_k > FX_Q16_ONE || cfg->veh_min_mps < 0 ||
         cfg->veh_min_mps > FX_Q16_INT(20) || cfg->xchk_thr_g < 0 || cfg->xchk_thr_g > FX_Q16_ONE ||
-        cfg->veh_gyro_dps < 0 || cfg->veh_gyro_dps > FX_Q16_INT(50) || cfg->diag_shift < 1u ||
-        cfg->diag_shift > 16u || cfg->diag_persist_n < 1u || cfg->diag_persist_n > (1u << 24))
+        cfg->veh_gyro_dps < 0 || cfg->veh_gyro_dps > FX_Q16_INT(50) || cfg->xchk_margin_g < 0 ||
+        cfg->xchk_margin_g > FX_Q16_ONE || cfg->diag_shift < 1u || cfg->diag_shift > 16u ||
+        cfg->diag_persist_n < 1u || cfg->diag_persist_n > (1u << 24))
         return INC_ERR_INVAL;
     err = att_init(&e->att, &cfg->att);
     if (err != INC_OK) return err;
@@ -126,6 +178,11 @@ int app_esc_init(struct app_esc *e, const struct app_esc_cfg *cfg)
                          : (uint32_t)((((uint64_t)1 << 32) +
                                        (uint64_t)(FX_Q16_ONE - cfg->veh_bound_k) - 1u) /
                                       (uint64_t)(FX_Q16_ONE - cfg->veh_bound_k));
+    /* G / rate per sample, rounded up: G <= 2^21.7 Q16, x 2^16 < 2^38; rate >= 100 Hz */
+    e->veh_step = (fx_q16_t)(((int64_t)cfg->veh_gyro_dps * 65536 + cfg->att.sample_rate_hz - 1) /
+                             cfg->att.sample_rate_hz);
+    e->veh_rest = veh_floor_of(e, cfg->veh_margin_g);
+    e->veh_hold = e->veh_rest;
     e->diag = 0u;
     e->ready = true;
     return INC_OK;
@@ -177,6 +234,7 @@ static void update_mode(struct app_esc *e, struct app *a, const struct app_vehic
         if (fast || (!have_speed && !rest && still_state_get(&a->still) == STILL_MOVING)) {
             e->mode = APP_MODE_DRIVING;
             e->n_out = 0u;
+            e->veh_hold = e->veh_rest; /* the floor starts from its value at rest */
             app_restart(a);
         } else if (e->since_cal_n < UINT32_MAX) {
             e->since_cal_n++;
@@ -184,29 +242,6 @@ static void update_mode(struct app_esc *e, struct app *a, const struct app_vehic
     } else if (e->still_n >= e->park_n) {
         e->mode = APP_MODE_PARKED;
     }
-}
-
-/* pi/180 in Q16, rounded up: bound_deg x this >= sin(bound) in g per g */
-#define DEG2RAD_Q16_UP 1144
-
-/*
- * The bound's floor (app_esc_cfg.veh_gyro_dps) for the threshold's part rest = margin + dyn x
- * klev (Q16 g, [0, 33 g]): the error e (rad) at which e = rest + k e, e = rest / (1 - k), in
- * degrees (x 180/pi rounded up: e is an upper bound), + the delay's share; at most 180 deg.
- * rest x inv < 2^22 x 2^32; the product with 180/pi (Q16 3754937, rounded up) is taken in two
- * steps so that no intermediate passes 2^63.
- */
-#define RAD2DEG_Q16_UP 3754937
-static fx_q16_t veh_floor_of(const struct app_esc *e, fx_q16_t rest)
-{
-    uint64_t fg, fdeg;
-    if (e->cfg.veh_gyro_dps == 0) return 0;
-    if (e->veh_inv_q16 == 0u) return FX_DEG_180;
-    fg = ((uint64_t)(uint32_t)rest * e->veh_inv_q16 + 0xFFFFu) >> 16; /* Q16 rad, rounded up */
-    if (fg > ((uint64_t)FX_DEG_180 << 16) / RAD2DEG_Q16_UP) return FX_DEG_180;
-    fdeg = (fg * RAD2DEG_Q16_UP + 0xFFFFu) >> 16;
-    fdeg += (uint64_t)e->veh_lag_deg;
-    return fdeg > (uint64_t)FX_DEG_180 ? FX_DEG_180 : (fx_q16_t)fdeg;
 }
 
 /* The driving diagnostics of one sample (after att_update and the mode): see app_esc.h. */
@@ -222,7 +257,8 @@ static void diag_step(struct app_esc *e, const struct sensor_sample *raw,
                                            raw->accel_g[0],  raw->accel_g[1],  raw->accel_g[2]};
         if (xcheck_flat_step(&e->flat, v) != 0u) e->diag |= APP_ESC_D_FLAT;
     }
-    e->veh_level = e->veh_thr = e->veh_floor = 0;
+    bool ran = false;
+    e->veh_level = e->veh_thr = 0;
     if (e->cfg.veh_margin_g != 0 && e->mode == APP_MODE_DRIVING && have_speed &&
         fx_abs(veh->speed_mps) >= e->cfg.veh_min_mps) {
         const fx_q16_t bound = att_get_bound(&e->att);
@@ -250,7 +286,8 @@ static void diag_step(struct app_esc *e, const struct sensor_sample *raw,
                                     32);
             e->veh_level = xcheck_mon_step(&e->vmon, r, 3u, thr, &fail);
             e->veh_thr = thr;
-            e->veh_floor = veh_floor_of(e, rest);
+            e->veh_floor = e->veh_hold = veh_floor_of(e, rest);
+            ran = true;
             if (fail) e->diag |= APP_ESC_D_VEH;
             e->v_prev = veh->speed_mps;
         } else if (!e->v_prev_ok) {
@@ -263,13 +300,23 @@ static void diag_step(struct app_esc *e, const struct sensor_sample *raw,
         xcheck_mon_reset(&e->kmon);
         e->v_prev_ok = false;
     }
+    if (!ran && e->cfg.veh_gyro_dps != 0 && e->mode == APP_MODE_DRIVING) {
+        /* no check: a gyro error up to veh_gyro_dps adds up to that much per sample unseen */
+        e->veh_hold = e->veh_hold > FX_DEG_180 - e->veh_step ? FX_DEG_180
+                                                             : e->veh_hold + e->veh_step;
+        e->veh_floor = e->veh_hold;
+    } else if (!ran) {
+        e->veh_floor = 0;
+    }
     e->xchk_level = 0;
     if (e->cfg.xchk_thr_g != 0 && e->aux_valid && !acc_sat) {
         fx_q16_t d[3];
         unsigned i;
         for (i = 0; i < 3u; i++)
             d[i] = fx_sub(as->acc_g[i], e->aux_acc[i]);
-        e->xchk_level = xcheck_mon_step(&e->xmon, d, 7u, e->cfg.xchk_thr_g, &fail);
+        /* z on its own, x and y as a norm (the tilt is what a bias across up makes) */
+        e->xchk_level = xcheck_mon_step(&e->xmon, d, 4u | XCHECK_MON_XY_NORM, e->cfg.xchk_thr_g,
+                                        &fail);
         if (fail) e->diag |= APP_ESC_D_XCHK;
     }
 }
@@ -311,6 +358,12 @@ int app_esc_step(struct app_esc *e, struct app *a, const struct sensor_sample *s
         att_get_quat(&e->att, out->q);
         att_get_euler(&e->att, &out->roll_deg, &out->pitch_deg);
         out->bound_deg = att_get_bound(&e->att);
+        if (e->cfg.xchk_thr_g != 0) { /* xchk_margin_g: an accelerometer bias the check misses */
+            int32_t up[3];
+            att_get_up(&e->att, up);
+            out->bound_deg = fx_add(out->bound_deg, xchk_term_of(e, up));
+            if (out->bound_deg > FX_DEG_180) out->bound_deg = FX_DEG_180;
+        }
         if (e->veh_floor > out->bound_deg) out->bound_deg = e->veh_floor; /* veh_gyro_dps */
         out->valid = att_get_valid(&e->att); /* with require_aiding: never without the speed */
         out->att_fault = att_get_status(&e->att);

@@ -282,6 +282,10 @@ int fmxd_run(const struct fmxd_setup *s, const struct fmxd_case *c, struct fmxd_
             if (o.valid) {
                 out->valid++;
                 if (e > b) out->valid_wrong++;
+                if (b > out->max_bound_deg) out->max_bound_deg = b;
+                if (b <= 2.0) out->valid_b[0]++;
+                if (b <= 5.0) out->valid_b[1]++;
+                if (b <= 10.0) out->valid_b[2]++;
                 if (e >= out->max_err_deg) {
                     out->max_err_deg = e;
                     out->bound_deg = b;

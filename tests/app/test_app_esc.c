@@ -303,11 +303,41 @@ static void test_driving_diagnostics(void)
     CHECK_OK(app_esc_init(&esc, &ec));
 }
 
-/* The DRIVING bound's floor from the vehicle-level check (app_esc_cfg.veh_gyro_dps): while the
- * check runs, the bound is max(att's bound, the error the check can leave undetected), that
- * error computed here in double from the threshold the output reports; with veh_gyro_dps 0 it
- * is att's bound. */
-static void floor_case(fx_q16_t gyro_dps, unsigned *n_checked)
+/* The cross-check's term (app_esc_cfg.xchk_margin_g) in double: T = thr + margin for the
+ * x-y norm and for z, the bias component across up at most T (1 + s), s = sqrt(u_x^2 + u_y^2),
+ * as the angle T (1 + s) / (1 - sqrt(2) T) rad, in degrees. */
+static double xterm_deg(const struct app_esc_cfg *ec, const int32_t up_q30[3])
+{
+    const double t = (ec->xchk_thr_g + ec->xchk_margin_g) / 65536.0;
+    const double ux = up_q30[0] / 1073741824.0, uy = up_q30[1] / 1073741824.0;
+    if (ec->xchk_thr_g == 0) return 0.0;
+    return t * (1.0 + sqrt(ux * ux + uy * uy)) / (1.0 - sqrt(2.0) * t) / DEG;
+}
+
+/* The published DRIVING bound against what it should be, computed here in double: the att
+ * bound + the cross-check's term (xterm_deg), or the floor when larger. */
+static void check_bound(const struct app_esc_cfg *ec, const struct app_esc_output *o,
+                        double floor_deg)
+{
+    int32_t up[3];
+    double want;
+    att_get_up(&esc.att, up);
+    want = att_get_bound(&esc.att) / 65536.0 + xterm_deg(ec, up);
+    if (floor_deg > want) {
+        /* floor_deg is derived from the reported threshold, itself rounded: within 0.002 */
+        CHECK(fabs(o->bound_deg / 65536.0 - floor_deg) < 0.002);
+    } else {
+        /* the firmware rounds every step up: at or above the exact value, by a few LSB */
+        CHECK(o->bound_deg / 65536.0 >= want - 2e-5);
+        CHECK(o->bound_deg / 65536.0 <= want + 0.002);
+    }
+}
+
+/* Level-ish at (roll, pitch) for 8 s at rest, then at 15 m/s: while the vehicle-level check
+ * runs the published bound is the larger of the att bound + the cross-check's term and the
+ * floor, the error computed here from the threshold the output reports. */
+static void floor_case(fx_q16_t gyro_dps, fx_q16_t xthr, double roll, double pitch,
+                       unsigned *n_checked)
 {
     struct app_esc_cfg ec;
     struct app_vehicle veh = {true, 0, 0};
@@ -320,37 +350,107 @@ static void floor_case(fx_q16_t gyro_dps, unsigned *n_checked)
     setup(&ec);
     REQUIRE(app_esc_diag_default(&ec) == INC_OK);
     CHECK_EQ_INT(ec.veh_gyro_dps, FX_Q16_INT(2));
+    CHECK_EQ_INT(ec.xchk_margin_g, 655); /* 0.01 g */
     ec.veh_gyro_dps = gyro_dps;
+    ec.xchk_thr_g = xthr;
     REQUIRE(app_esc_init(&esc, &ec) == INC_OK);
     for (i = 0; i < 20u * 819u; i++) {
         const double t = i / 819.2;
         veh.speed_mps = t < 8.0 ? 0 : FX_Q16_INT(15);
-        sample(&s, 3.0, -2.0, w, 0.0);
+        sample(&s, roll, pitch, w, 0.0);
         REQUIRE(app_esc_step(&esc, &app, &s, INC_OK, &veh, &o, &have) == INC_OK);
         if (!have || o.mode != APP_MODE_DRIVING || o.veh_thr_g == 0) continue;
         {
             const double b_att = att_get_bound(&esc.att) / 65536.0;
             const double rest = o.veh_thr_g / 65536.0 - 0.5 * b_att * DEG;
-            const double floor_deg = gyro_dps == 0 ? 0.0 : rest / 0.5 / DEG + lag;
-            const double want = floor_deg > b_att ? floor_deg : b_att;
-            CHECK(fabs(o.bound_deg / 65536.0 - want) < 0.002);
+            check_bound(&ec, &o, gyro_dps == 0 ? 0.0 : rest / 0.5 / DEG + lag);
             if (gyro_dps != 0) {
                 /* at a steady speed: the margin's 15 mg alone is 1.72 deg */
                 CHECK(o.bound_deg / 65536.0 >= 0.015 / 0.5 / DEG + lag - 0.002);
+            }
+            if (xthr != 0) {
+                /* 40 mg across up: at least 40 mg as an angle, 2.3 deg */
+                CHECK(o.bound_deg / 65536.0 >= b_att + 0.04 / DEG - 0.002);
             }
             (*n_checked)++;
         }
     }
 }
 
+/* The floor without the check: at 15 m/s for 10 s (the check runs), then at 1 m/s (below
+ * veh_min_mps, still DRIVING): the floor grows from its last value by veh_gyro_dps per second;
+ * back at 15 m/s it is the check's again. From PARKED straight to 1 m/s it starts from the
+ * floor at rest (the margin's share + the delay's, 3.07 deg). */
+static void test_bound_growth(void)
+{
+    struct app_esc_cfg ec;
+    struct app_vehicle veh = {true, 0, 0};
+    struct sensor_sample s;
+    struct app_esc_output o;
+    const double w[3] = {0, 0, 0};
+    const double rest = 0.015 / 0.5 / DEG + 2.0 * (512.0 + 41.0) / 819.2;
+    double last = 0.0;
+    unsigned i, slow_n = 0u, grown = 0u, first = 0u;
+    bool have;
+    setup(&ec);
+    REQUIRE(app_esc_diag_default(&ec) == INC_OK);
+    ec.xchk_thr_g = 0; /* the floor alone */
+    REQUIRE(app_esc_init(&esc, &ec) == INC_OK);
+    for (i = 0; i < 20u * 819u; i++) {
+        const double t = i / 819.2;
+        veh.speed_mps = t < 2.0    ? FX_Q16_INT(1)
+                        : t < 6.0  ? 0
+                        : t < 16.0 ? FX_Q16_INT(15)
+                                   : FX_Q16_INT(1);
+        sample(&s, 3.0, -2.0, w, 0.0);
+        REQUIRE(app_esc_step(&esc, &app, &s, INC_OK, &veh, &o, &have) == INC_OK);
+        if (t >= 16.0) slow_n++;
+        if (!have || o.mode != APP_MODE_DRIVING) continue;
+        if (t < 2.0) {
+            /* from PARKED at 1 m/s: the floor at rest + 2 deg/s since, sample by sample */
+            const double b_att = att_get_bound(&esc.att) / 65536.0;
+            const double grow = rest + 2.0 * (i + 1u) / 819.2;
+            const double want = grow > b_att ? grow : b_att;
+            CHECK(o.bound_deg / 65536.0 >= want - 0.002);
+            CHECK(o.bound_deg / 65536.0 <= want + 0.002 + (i + 1u) / 65536.0);
+            first++;
+        } else if (t < 16.0 && o.veh_thr_g != 0) {
+            last = o.bound_deg / 65536.0; /* the check's floor (test_bound_floor) */
+        } else if (t >= 16.0) {
+            const double want = last + 2.0 * slow_n / 819.2;
+            CHECK_EQ_INT(o.veh_thr_g, 0);
+            CHECK(o.bound_deg / 65536.0 >= want - 0.01);
+            CHECK(o.bound_deg / 65536.0 <= want + 0.01 + slow_n / 65536.0);
+            grown++;
+        }
+    }
+    CHECK(first > 150u);
+    CHECK(grown > 350u); /* 4 s of outputs at about 100 Hz */
+    CHECK(last > 3.0 && last < 3.2);
+    CHECK(o.bound_deg / 65536.0 > last + 7.9); /* 4 s x 2 deg/s */
+}
+
 static void test_bound_floor(void)
 {
     struct app_esc_cfg ec;
     unsigned n = 0u;
-    floor_case(FX_Q16_INT(2), &n);
+    const fx_q16_t thr = (fx_q16_t)((FX_Q16_ONE * 3 + 50) / 100);
+    floor_case(FX_Q16_INT(2), thr, 3.0, -2.0, &n);
     CHECK(n > 800u); /* 12 s of outputs at about 100 Hz, the check running */
     n = 0u;
-    floor_case(0, &n);
+    floor_case(FX_Q16_INT(2), 0, 3.0, -2.0, &n);
+    CHECK(n > 800u);
+    n = 0u;
+    floor_case(0, thr, 3.0, -2.0, &n);
+    CHECK(n > 800u);
+    n = 0u;
+    floor_case(0, 0, 3.0, -2.0, &n); /* att's bound alone */
+    CHECK(n > 800u);
+    n = 0u;
+    floor_case(FX_Q16_INT(2), thr, 25.0, 20.0, &n); /* up off the z axis: s = 0.53 */
+    CHECK(n > 800u);
+    n = 0u;
+    floor_case(0, thr, -28.0, 15.0, &n);
     CHECK(n > 800u);
     setup(&ec);
     REQUIRE(app_esc_diag_default(&ec) == INC_OK);
@@ -359,6 +459,12 @@ static void test_bound_floor(void)
     ec.veh_gyro_dps = -1;
     CHECK_ERR(app_esc_init(&esc, &ec), INC_ERR_INVAL);
     ec.veh_gyro_dps = FX_Q16_INT(50);
+    CHECK_OK(app_esc_init(&esc, &ec));
+    ec.xchk_margin_g = -1;
+    CHECK_ERR(app_esc_init(&esc, &ec), INC_ERR_INVAL);
+    ec.xchk_margin_g = FX_Q16_ONE + 1;
+    CHECK_ERR(app_esc_init(&esc, &ec), INC_ERR_INVAL);
+    ec.xchk_margin_g = FX_Q16_ONE;
     CHECK_OK(app_esc_init(&esc, &ec));
 }
 
@@ -370,5 +476,6 @@ int main(void)
     UNIT_RUN(test_bad_calls);
     UNIT_RUN(test_driving_diagnostics);
     UNIT_RUN(test_bound_floor);
+    UNIT_RUN(test_bound_growth);
     return unit_report();
 }

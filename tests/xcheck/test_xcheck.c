@@ -233,11 +233,59 @@ static void test_mon(void)
     }
 }
 
+/* XCHECK_MON_XY_NORM: the level is the larger of the masked axes' |lp| and the x-y norm,
+ * rounded up to Q16: never below the exact norm of the Q24 values, at most 1 LSB above; random
+ * inputs (shift 1: lp moves fast) up to the 32 g clamp, and the persistence on the norm. */
+static void test_mon_norm(void)
+{
+    struct xcheck_mon m;
+    unsigned k;
+    bool fail;
+    double worst = 0.0;
+    CHECK_OK(xcheck_mon_init(&m, 1u, 2u));
+    for (k = 0; k < UNIT_SIZE(200000u, 20000u); k++) {
+        const int sc = (int)(k % 5u) * 6;
+        fx_q16_t d[3];
+        fx_q16_t lev, lz;
+        double nx;
+        unsigned i;
+        for (i = 0; i < 3u; i++)
+            d[i] = (fx_q16_t)((int32_t)rnd_u32() >> sc);
+        lev = xcheck_mon_step(&m, d, 4u | XCHECK_MON_XY_NORM, INT32_MAX, NULL);
+        nx = sqrt((double)m.lp[0] * m.lp[0] + (double)m.lp[1] * m.lp[1]) / 256.0;
+        lz = (fx_q16_t)((abs(m.lp[2]) + 128) >> 8);
+        if (lz > nx + 1.0) {
+            CHECK_EQ_INT(lev, lz);
+        } else {
+            CHECK(lev >= nx - 1e-9 || lev == lz);
+            CHECK(lev <= (nx > lz ? nx : lz) + 1.0);
+            if (nx > lz && lev - nx > worst) worst = lev - nx;
+        }
+    }
+    printf("  mon x-y norm: at most %.3f LSB Q16 above the exact norm\n", worst);
+    CHECK(worst <= 1.0);
+    /* (0.6, 0.6) g passes a 0.7 g per-axis check but not the norm (0.85 g) */
+    {
+        const fx_q16_t d[3] = {FX_Q16_INT(6) / 10, FX_Q16_INT(6) / 10, 0};
+        const fx_q16_t thr = FX_Q16_INT(7) / 10;
+        fx_q16_t lev = 0;
+        CHECK_OK(xcheck_mon_init(&m, 1u, 2u));
+        for (k = 0; k < 60u; k++)
+            (void)xcheck_mon_step(&m, d, 3u, thr, &fail);
+        CHECK(!fail);
+        for (k = 0; k < 60u; k++)
+            lev = xcheck_mon_step(&m, d, XCHECK_MON_XY_NORM, thr, &fail);
+        CHECK(fail);
+        CHECK(fabs(lev / 65536.0 - 0.6 * sqrt(2.0)) < 2e-5);
+    }
+}
+
 int main(void)
 {
     UNIT_RUN(test_args);
     UNIT_RUN(test_flat);
     UNIT_RUN(test_kin_residual);
     UNIT_RUN(test_mon);
+    UNIT_RUN(test_mon_norm);
     return unit_report();
 }

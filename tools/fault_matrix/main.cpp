@@ -271,7 +271,8 @@ int run_driving(bool full, bool baseline, bool no_aux, uint64_t seed, FILE *csv)
     s.aux = !no_aux;
     unsigned n = 0, detected = 0, harmless = 0, valid_wrong = 0, vw_outputs = 0, late = 0,
              false_alarms = 0, hd = 0;
-    double veh_ratio_ff = 0.0, xchk_ff = 0.0;
+    double veh_ratio_ff = 0.0, xchk_ff = 0.0, bound_ff = 0.0;
+    unsigned ff_valid = 0, ff_b[3] = {0, 0, 0};
     for (const fmxd_case &c : dmatrix(full)) {
         fmxd_result r;
         const int err = fmxd_run(&s, &c, &r);
@@ -290,6 +291,10 @@ int run_driving(bool full, bool baseline, bool no_aux, uint64_t seed, FILE *csv)
             if (r.false_diag != 0u) false_alarms++;
             if (r.max_veh_ratio > veh_ratio_ff) veh_ratio_ff = r.max_veh_ratio;
             if (r.max_xchk_g > xchk_ff) xchk_ff = r.max_xchk_g;
+            if (r.max_bound_deg > bound_ff) bound_ff = r.max_bound_deg;
+            ff_valid += r.valid;
+            for (unsigned k = 0; k < 3u; k++)
+                ff_b[k] += r.valid_b[k];
             verdict = r.false_diag ? "false-alarm" : (r.valid_wrong ? "VALID-WRONG" : "ok");
         } else if (r.detected && r.latency <= kDriveLatency) {
             detected++;
@@ -345,6 +350,11 @@ int run_driving(bool full, bool baseline, bool no_aux, uint64_t seed, FILE *csv)
     tool_summary_add("false_alarms", "%u", false_alarms);
     tool_summary_add("ff_veh_ratio_max", "%.3f", veh_ratio_ff);
     tool_summary_add("ff_xchk_mg_max", "%.2f", xchk_ff * 1e3);
+    tool_summary_add("ff_bound_deg_max", "%.3f", bound_ff);
+    tool_summary_add("ff_valid", "%u", ff_valid);
+    tool_summary_add("ff_bound_le2", "%u", ff_b[0]);
+    tool_summary_add("ff_bound_le5", "%u", ff_b[1]);
+    tool_summary_add("ff_bound_le10", "%u", ff_b[2]);
     return tool_summary_end(pass ? "ok" : "fail", pass ? 0 : 1);
 }
 

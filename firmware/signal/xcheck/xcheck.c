@@ -131,6 +131,16 @@ fx_q16_t xcheck_mon_step(struct xcheck_mon *m, const fx_q16_t d[3], uint8_t axes
             if (l > level) level = l;
         }
     }
+    if ((axes & XCHECK_MON_XY_NORM) != 0u) {
+        /* |lp| <= 2^29 Q24: the sum of two squares < 2^59; the root <= 2^29.5, rounded up to
+         * Q24 and then to Q16: <= 2^21.6 */
+        const uint64_t ss = (uint64_t)((int64_t)m->lp[0] * m->lp[0]) +
+                            (uint64_t)((int64_t)m->lp[1] * m->lp[1]);
+        uint64_t r = fx_isqrt64(ss);
+        if (r * r < ss) r++;
+        r = (r + 255u) >> 8;
+        if ((int32_t)r > level) level = (int32_t)r;
+    }
     if (level > thr_g) {
         if (m->over_n < m->persist_n) m->over_n++;
     } else {

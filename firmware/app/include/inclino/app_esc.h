@@ -90,7 +90,7 @@ struct app_esc_cfg {
                               below their minimum), [0, 20] m/s [3] */
     fx_q16_t xchk_thr_g;     /* two-sensor cross-check: fails when the low-passed difference of
                               the second accelerometer (app_esc_set_aux_accel) and the IMU's,
-                              any axis, exceeds this. 0: off, else (0, 1] g [0.03: both parts'
+                              its x-y norm or its z axis, exceeds this. 0: off, else (0, 1] g [0.03: both parts'
                               offset-change terms, 10 mg each, + 5 x the low-passed noise of
                               both (ADIS 10 mg, SCA3000 5 mg rms per sample: 2.5 mg) + 7.5 mg
                               for their sampling skew and placement under vibration] */
@@ -103,8 +103,20 @@ struct app_esc_cfg {
                               (the error at which the threshold would be passed, taken as
                               radians: >= its asin), in degrees, + veh_gyro_dps x the check's
                               delay (the low-pass's 2^(diag_shift+1) samples + diag_persist_n),
-                              for gyro errors up to veh_gyro_dps. 0: no floor, else
+                              for gyro errors up to veh_gyro_dps. While DRIVING without the
+                              check (below veh_min_mps, a held sample), the floor grows from its
+                              last value by veh_gyro_dps per second (from the floor at rest,
+                              the margin's share + the delay's, on entering DRIVING): the error
+                              such a gyro error can add unseen. 0: no floor, else
                               (0, 50] deg/s [2: the fault matrix's bias step] */
+    fx_q16_t xchk_margin_g;  /* the cross-check's term in the DRIVING bound: an accelerometer
+                              bias whose x-y norm and z part are each up to T = xchk_thr_g +
+                              this passes the check unseen (this: the healthy parts' low-passed
+                              disagreement); its tilt error, at most T (1 + s) / (1 - sqrt(2) T)
+                              rad with s = sqrt(u_x^2 + u_y^2) of the estimate's up u (T for a
+                              level sensor), is added to the att bound. Only with xchk_thr_g
+                              on. [0, 1] g [0.01: the fault-free drives' largest low-passed
+                              disagreement is 4.6 mg] */
     uint8_t diag_shift;      /* the residuals' two-stage low-pass, 2^-shift per sample and stage,
                               [1, 16] [8: 0.31 s per stage at 819.2 SPS, group delay 0.62 s] */
     uint32_t diag_persist_n; /* samples above the threshold that make a failure,
@@ -125,8 +137,10 @@ struct app_esc_output {
     bool valid;   /* DRIVING: att_get_valid; PARKED: the EPB result's validity */
     int32_t q[4]; /* DRIVING: sensor to earth, Q30 w x y z */
     fx_q16_t roll_deg, pitch_deg;
-    fx_q16_t bound_deg; /* DRIVING: 99.9 % inclination-error bound, at least the vehicle-level
-                           check's floor (veh_gyro_dps); PARKED: slope bound */
+    fx_q16_t bound_deg; /* DRIVING: the larger of the att filter's 99.9 % inclination-error
+                           bound + the cross-check's term (xchk_margin_g) and the vehicle-level
+                           check's floor (veh_gyro_dps): the error a single fault the checks
+                           cannot see yet can add; PARKED: slope bound */
     uint8_t att_fault;  /* ATT_FAULT_* */
     uint8_t diag;       /* APP_ESC_D_* (DRIVING outputs; the latched bits in both modes) */
     fx_q16_t veh_level_g, xchk_level_g; /* the diagnostics' low-passed residuals now (Q16 g;
@@ -152,6 +166,9 @@ struct app_esc {
     fx_q16_t aux_acc[3]; /* the second accelerometer's latest calibrated sample */
     fx_q16_t veh_level, xchk_level, veh_thr;
     fx_q16_t veh_floor;   /* the bound's floor from the vehicle-level check now (0: none) */
+    fx_q16_t veh_hold;    /* the floor carried while the check does not run, Q16 deg */
+    fx_q16_t veh_rest;    /* the floor at rest (margin only), Q16 deg */
+    fx_q16_t veh_step;    /* veh_gyro_dps per sample, Q16 deg, rounded up */
     fx_q16_t veh_lag_deg; /* veh_gyro_dps x the check's delay, Q16 deg */
     uint32_t veh_inv_q16; /* 1 / (1 - veh_bound_k), Q16 (0: veh_bound_k = 1, no floor possible) */
     uint8_t diag;         /* latched APP_ESC_D_* */

@@ -102,7 +102,9 @@ void xcheck_mon_reset(struct xcheck_mon *m);
  * both start at 0 after init/reset: a residual that comes in steps, such as a speed change held
  * between its frames, is not taken for its first value; the second stage takes the ripple of
  * such steps down by another factor of about 2^shift / (steps' period)), level = max |lp_i|
- * over the axes of the mask (bits 0..2), rounded to Q16. *fail (when not NULL) is true once
+ * over the axes of the mask (bits 0..2), rounded to Q16; with XCHECK_MON_XY_NORM in the mask
+ * also the Euclidean norm sqrt(lp_x^2 + lp_y^2), rounded up to Q16 (at most 1 LSB Q16 above
+ * the exact norm of the Q24 values, never below it). *fail (when not NULL) is true once
  * level > thr_g (Q16 g) has held for persist_n consecutive samples.
  * Returns level (Q16 g, [0, 32 g]); 0 for NULL m or d.
  * Accuracy: a constant input is reached to within 2^(shift-1) LSB Q24 per stage (2^shift LSB
@@ -110,6 +112,8 @@ void xcheck_mon_reset(struct xcheck_mon *m);
  * for white noise of sigma per sample the output's sigma is sigma sqrt(g (2 - 2g + g^2) / (2 -
  * g)^3) with g = 2^-shift (0.031 sigma at shift 8).
  */
+#define XCHECK_MON_XY_NORM 0x08u /* xcheck_mon_step's mask: the x-y norm is a level too */
+
 fx_q16_t xcheck_mon_step(struct xcheck_mon *m, const fx_q16_t d[3], uint8_t axes, fx_q16_t thr_g,
                          bool *fail);
 

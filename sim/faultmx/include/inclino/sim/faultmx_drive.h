@@ -80,6 +80,8 @@ struct fmxd_result {
     double max_veh_ratio;  /* largest vehicle-check level / threshold seen (diagnostics on) */
     double max_xchk_g;     /* largest cross-check level seen, g */
     uint32_t valid_before; /* DRIVING outputs valid before the onset */
+    double max_bound_deg;  /* largest bound of a valid output after the onset */
+    uint32_t valid_b[3];   /* valid outputs after the onset with bound <= 2, 5, 10 deg */
 };
 
 /* Run one case. 0, or an error of the simulation or the application. */
