@@ -97,8 +97,16 @@ static struct adis_imu imu;
 static struct sensor sensor = {&adis_imu_sensor_ops, &imu};
 static struct calstore store;
 static struct app app;
+/* The end-of-line faces stay static: they live from the first FACE request to the SAVE, across
+ * the measurements in between. The record built from them (640 B) and the configuration (192 B)
+ * live only inside one call each (eol_save, app_start) and sit on the stack there, off the
+ * deepest path (an end-of-line face read down to a DIAG_STAT read; the stack report's
+ * image_stack_<image> test guards the worst case against the reserved stack). */
 static struct app_face faces[CAL_FACES];
-static struct calrec rec;
+
+/* Not inlined (here and in app_start): the locals must not join the frame of the main loop,
+ * which is on every path. */
+#define EPB_NOINLINE __attribute__((noinline))
 
 int epb_image_adis_up(struct adis_imu *dev, const struct epb_image_board *b)
 {
@@ -120,6 +128,19 @@ int epb_image_adis_up(struct adis_imu *dev, const struct epb_image_board *b)
     return err;
 }
 
+/* Offset and gain from the six faces into a default record, bound and stored. */
+static EPB_NOINLINE int eol_save(void)
+{
+    struct calrec rec;
+    int err;
+    calrec_set_default(&rec);
+    err = app_eol_six_position(faces, &rec);
+    if (err == INC_OK) {
+        err = app_eol_save(&app, &rec, &store, NULL);
+    }
+    return err;
+}
+
 static void diag_serve(void)
 {
     const uint32_t cmd = epb_diag.cmd;
@@ -128,11 +149,7 @@ static void diag_serve(void)
         /* A face must hold still: 50 mg / 2 deg/s span at most. */
         err = app_eol_face(&app, epb_diag.n, 3277, FX_Q16_INT(2), &faces[epb_diag.face]);
     } else if (cmd == EPB_DIAG_SAVE) {
-        calrec_set_default(&rec);
-        err = app_eol_six_position(faces, &rec);
-        if (err == INC_OK) {
-            err = app_eol_save(&app, &rec, &store, NULL);
-        }
+        err = eol_save();
     }
     epb_diag.status = err;
     epb_diag.cmd = EPB_DIAG_NONE;
@@ -157,20 +174,27 @@ void epb_image_run(const struct hal *hal)
     epb_image_run_on(&b);
 }
 
+/* The application started on the store: app_init copies the configuration, so it lives here
+ * only ([ADI-EPB]'s budget and the default stillness thresholds at the ADIS default 819.2 SPS,
+ * the same on every start). */
+static EPB_NOINLINE int app_start(void)
+{
+    struct app_cfg cfg;
+    (void)app_cfg_default(&cfg, adis_imu_sample_rate_msps(ADIS_IMU_SMPL_PRD_DEFAULT));
+    return app_init(&app, &cfg, &sensor, &store);
+}
+
 void epb_image_run_on(const struct epb_image_board *board)
 {
     const struct hal *hal = board->hal;
-    /* Static, not on the stack: the M0+ image has 1.5 KiB of stack (docs/build.md). */
-    static struct app_cfg cfg;
+    /* Static, not on the stack: this frame is on every path, the deepest included. */
     static struct app_result r;
-    /* [ADI-EPB]'s budget and the default stillness thresholds at the ADIS default 819.2 SPS. */
-    (void)app_cfg_default(&cfg, adis_imu_sample_rate_msps(ADIS_IMU_SMPL_PRD_DEFAULT));
     for (;;) {
         unsigned i;
         if (epb_image_adis_up(&imu, board) != INC_OK ||
             calstore_init(&store, board->store != NULL ? board->store : epb_image_no_flash()) !=
                 INC_OK ||
-            app_init(&app, &cfg, &sensor, &store) != INC_OK) {
+            app_start() != INC_OK) {
             hal_delay_ms(hal, EPB_RETRY_MS);
             continue;
         }

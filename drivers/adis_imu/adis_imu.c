@@ -631,6 +631,19 @@ int adis_imu_read_reg(struct adis_imu *dev, uint8_t addr, uint16_t *value)
     return adis_read_reg(&dev->spi, addr, value);
 }
 
+int adis_imu_read_known(struct adis_imu *dev, uint8_t addr, uint16_t *value)
+{
+    int err;
+    if (value == NULL) {
+        return INC_ERR_NULL;
+    }
+    err = enter(dev);
+    if (err != INC_OK) {
+        return err;
+    }
+    return adis_read_reg(&dev->spi, addr, value);
+}
+
 int adis_imu_write_reg(struct adis_imu *dev, uint8_t addr, uint16_t value)
 {
     const struct adis_imu_reg_desc *d;

@@ -78,4 +78,16 @@
 #define ADIS_IMU_MSC_MEM_TEST 0x0800u
 #define ADIS_IMU_MSC_DEFAULT 0x0006u
 
+/* ---------------------------------------------------------------------------------------------
+ * Reads the driver makes at constant addresses (the serial number and lot ids of the 1636x,
+ * SUPPLY_OUT): adis_imu_read_reg without the look-up in the register map, which for each of them
+ * always finds a readable register of the part's family (tests/adis_imu checks every one against
+ * adis_imu_reg_find). So an image that never reads a register by a caller's address links no
+ * register map (adis_imu_regmap.c). Not for DIAG_STAT (adis_imu_read_diag). 0, INC_ERR_NULL,
+ * INC_ERR_STATE (not initialised), a bus error.
+ * ------------------------------------------------------------------------------------------- */
+#include <stdint.h>
+struct adis_imu;
+int adis_imu_read_known(struct adis_imu *dev, uint8_t addr, uint16_t *value);
+
 #endif /* INCLINO_ADIS_IMU_REGS_H */

@@ -61,9 +61,9 @@ int adis_imu_read_identity(struct adis_imu *dev, struct sensor_identity *out)
     err = adis_imu_found(dev, &prod, NULL);
     if (err == INC_OK && dev->info->family == (uint8_t)ADIS_IMU_FAMILY_1636X) {
         /* The 1636x has a serial number and lot ids (the calrec.h binding table). */
-        err = adis_imu_read_reg(dev, ADIS1636X_REG_SERIAL_NUM, &serial);
-        if (err == INC_OK) err = adis_imu_read_reg(dev, ADIS1636X_REG_LOT_ID1, &lot1);
-        if (err == INC_OK) err = adis_imu_read_reg(dev, ADIS1636X_REG_LOT_ID2, &lot2);
+        err = adis_imu_read_known(dev, ADIS1636X_REG_SERIAL_NUM, &serial);
+        if (err == INC_OK) err = adis_imu_read_known(dev, ADIS1636X_REG_LOT_ID1, &lot1);
+        if (err == INC_OK) err = adis_imu_read_known(dev, ADIS1636X_REG_LOT_ID2, &lot2);
     }
     if (err != INC_OK) {
         return err;
@@ -177,7 +177,7 @@ static int op_read_diag(void *ctx, struct sensor_diag *out)
     sensor_diag_clear(out);
     err = adis_imu_read_diag(dev, &d);
     if (err == INC_OK) {
-        err = adis_imu_read_reg(dev, ADIS_IMU_REG_SUPPLY_OUT, &w);
+        err = adis_imu_read_known(dev, ADIS_IMU_REG_SUPPLY_OUT, &w);
     }
     if (err != INC_OK) {
         return err;

@@ -317,6 +317,23 @@ static void test_tables(void)
     CHECK(adis_imu_reg_find(ADIS_IMU_FAMILY_1636X, ADIS1640X_REG_ALM_CTRL) == NULL);
 }
 
+/* adis_imu_read_known (adis_imu_regs.h) skips the map look-up of adis_imu_read_reg: each
+ * constant address the driver reads with it must be a readable register of the family it is
+ * read on, so that the two give the same result. */
+static void test_read_known_addresses(void)
+{
+    static const uint8_t r1636x[] = {ADIS1636X_REG_SERIAL_NUM, ADIS1636X_REG_LOT_ID1,
+                                     ADIS1636X_REG_LOT_ID2, ADIS_IMU_REG_SUPPLY_OUT};
+    const struct adis_imu_reg_desc *d;
+    unsigned i;
+    for (i = 0; i < sizeof(r1636x); i++) {
+        d = adis_imu_reg_find(ADIS_IMU_FAMILY_1636X, r1636x[i]);
+        CHECK(d != NULL && (d->access & ADIS_IMU_RO) != 0u && r1636x[i] != ADIS_IMU_REG_DIAG_STAT);
+    }
+    d = adis_imu_reg_find(ADIS_IMU_FAMILY_1640X, ADIS_IMU_REG_SUPPLY_OUT);
+    CHECK(d != NULL && (d->access & ADIS_IMU_RO) != 0u);
+}
+
 static void test_diag(void)
 {
     struct adis_imu_diag d;
@@ -351,6 +368,7 @@ int main(void)
     UNIT_RUN(test_accel_offsets);
     UNIT_RUN(test_sample_rate);
     UNIT_RUN(test_tables);
+    UNIT_RUN(test_read_known_addresses);
     UNIT_RUN(test_diag);
     return unit_report();
 }

@@ -237,6 +237,20 @@ static inline int fx_recip_q30(fx_q30_t x, fx_q30_t *r)
  * LSB when not saturated. The same division as fx_sum_mean. */
 int32_t fx_div64(int64_t num, uint32_t den);
 
+/*
+ * 64-bit division (base/fx/fx_div64.c), exact integers, no Q format: C's quotient and
+ * remainder, bit for bit (tests/fx test_fx_div64: against the compiler's own division on the
+ * host, edge cases and a million random pairs of every magnitude). fx_udivmod64: n / d, *rem =
+ * n % d (rem may be NULL); d == 0 gives UINT64_MAX and *rem = n. fx_divmod64: truncated toward
+ * zero, the remainder takes n's sign, |rem| < |d|; d == 0 gives INT64_MAX for n > 0, INT64_MIN
+ * for n < 0, 0 for 0, and *rem = n; INT64_MIN / -1 gives INT64_MIN, remainder 0 (C leaves both
+ * undefined). No rounding, no saturation otherwise, error 0. Cost: a
+ * 32-bit division when both operands fit 32 bits, else one shift-subtract step per quotient bit
+ * (at most 64). On the Cortex-M0+ they are also gcc's __aeabi_uldivmod / __aeabi_ldivmod.
+ */
+uint64_t fx_udivmod64(uint64_t n, uint64_t d, uint64_t *rem);
+int64_t fx_divmod64(int64_t n, int64_t d, int64_t *rem);
+
 /* round(x * m / d), ties away from zero, saturated to int32: fx_div64(x * m, d), bit for bit, for
  * |x| < 2^32 and m < 2^31 (so x * m fits int64); d == 0 as fx_div64. |error| <= 0.5 LSB when not
  * saturated. When |x| < 2^32 and (d - 1) * m < 2^32 it needs only 32-bit divisions (two), so a
