@@ -610,14 +610,16 @@ int adis_imu_to_phys(const struct adis_imu *dev, const struct adis_imu_sample *i
 
 /* ---- registers ---- */
 
+/* The start of a register read: INC_ERR_NULL for no value, else enter's result. */
+static int read_enter(struct adis_imu *dev, const uint16_t *value)
+{
+    return value == NULL ? INC_ERR_NULL : enter(dev);
+}
+
 int adis_imu_read_reg(struct adis_imu *dev, uint8_t addr, uint16_t *value)
 {
     const struct adis_imu_reg_desc *d;
-    int err;
-    if (value == NULL) {
-        return INC_ERR_NULL;
-    }
-    err = enter(dev);
+    const int err = read_enter(dev, value);
     if (err != INC_OK) {
         return err;
     }
@@ -633,15 +635,8 @@ int adis_imu_read_reg(struct adis_imu *dev, uint8_t addr, uint16_t *value)
 
 int adis_imu_read_known(struct adis_imu *dev, uint8_t addr, uint16_t *value)
 {
-    int err;
-    if (value == NULL) {
-        return INC_ERR_NULL;
-    }
-    err = enter(dev);
-    if (err != INC_OK) {
-        return err;
-    }
-    return adis_read_reg(&dev->spi, addr, value);
+    const int err = read_enter(dev, value);
+    return err != INC_OK ? err : adis_read_reg(&dev->spi, addr, value);
 }
 
 int adis_imu_write_reg(struct adis_imu *dev, uint8_t addr, uint16_t value)

@@ -300,13 +300,14 @@ static void diag_step(struct app_esc *e, const struct sensor_sample *raw,
         xcheck_mon_reset(&e->kmon);
         e->v_prev_ok = false;
     }
-    if (!ran && e->cfg.veh_gyro_dps != 0 && e->mode == APP_MODE_DRIVING) {
+    if (!ran) {
         /* no check: a gyro error up to veh_gyro_dps adds up to that much per sample unseen */
-        e->veh_hold = e->veh_hold > FX_DEG_180 - e->veh_step ? FX_DEG_180
-                                                             : e->veh_hold + e->veh_step;
-        e->veh_floor = e->veh_hold;
-    } else if (!ran) {
-        e->veh_floor = 0;
+        const bool grow = e->cfg.veh_gyro_dps != 0 && e->mode == APP_MODE_DRIVING;
+        if (grow) {
+            e->veh_hold = e->veh_hold > FX_DEG_180 - e->veh_step ? FX_DEG_180
+                                                                 : e->veh_hold + e->veh_step;
+        }
+        e->veh_floor = grow ? e->veh_hold : 0;
     }
     e->xchk_level = 0;
     if (e->cfg.xchk_thr_g != 0 && e->aux_valid && !acc_sat) {
