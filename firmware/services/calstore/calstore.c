@@ -101,9 +101,10 @@ int calstore_init(struct calstore *st, const struct calstore_config *cfg)
     return INC_OK;
 }
 
-static int flash_read(struct calstore *st, unsigned slot, uint32_t off, uint8_t *buf, uint32_t len)
+/* addr: a driver address (a slot's first byte plus an offset). */
+static int flash_read(struct calstore *st, uint32_t addr, uint8_t *buf, uint32_t len)
 {
-    return st->cfg.ops->read(st->cfg.ctx, st->cfg.slot_addr[slot] + off, buf, len);
+    return st->cfg.ops->read(st->cfg.ctx, addr, buf, len);
 }
 
 /* The commit unit's contents: the commit word, repeated over the unit, little-endian. */
@@ -115,36 +116,41 @@ static void commit_fill(uint8_t *unit, uint32_t len)
     }
 }
 
-/* 0 and *erased = whether bytes [off, off+len) of the slot are all erased. */
-static int region_erased(struct calstore *st, unsigned slot, uint32_t off, uint32_t len,
-                         bool *erased)
+/*
+ * Compare the len flash bytes at driver address addr with want[0..len), or with the erased
+ * value when want is NULL. Returns a driver error, else 0 when every byte matched and 1 at the first that did not
+ * (nothing after it is read). The bytes are read in pieces of at most CALSTORE_PROG_MAX into a
+ * local buffer when want is given (want may then be st->buf), else in pieces of sizeof st->buf
+ * into st->buf.
+ */
+static int region_differs(struct calstore *st, uint32_t addr, uint32_t len, const uint8_t *want)
 {
-    uint32_t done = 0, i;
+    uint8_t piece[CALSTORE_PROG_MAX];
+    uint8_t *buf = (want != NULL) ? piece : st->buf;
+    const uint32_t cap = (want != NULL) ? sizeof piece : sizeof st->buf;
+    uint32_t done, i;
 
-    *erased = true;
-    while (done < len) {
+    for (done = 0; done < len; done += cap) {
         uint32_t n = len - done;
         int err;
-        if (n > sizeof st->buf) {
-            n = sizeof st->buf;
+        if (n > cap) {
+            n = cap;
         }
-        err = flash_read(st, slot, off + done, st->buf, n);
+        err = flash_read(st, addr + done, buf, n);
         if (err) {
             return err;
         }
         for (i = 0; i < n; i++) {
-            if (st->buf[i] != CALSTORE_ERASED) {
-                *erased = false;
-                return INC_OK;
+            if (buf[i] != ((want != NULL) ? want[done + i] : CALSTORE_ERASED)) {
+                return 1;
             }
         }
-        done += n;
     }
     return INC_OK;
 }
 
-/* 0 and *crc = CRC-32 of slot bytes [0, len), streamed through the image buffer. */
-static int region_crc(struct calstore *st, unsigned slot, uint32_t len, uint32_t *crc)
+/* 0 and *crc = CRC-32 of the len flash bytes at addr, streamed through the image buffer. */
+static int region_crc(struct calstore *st, uint32_t addr, uint32_t len, uint32_t *crc)
 {
     uint32_t done = 0;
 
@@ -155,7 +161,7 @@ static int region_crc(struct calstore *st, unsigned slot, uint32_t len, uint32_t
         if (n > sizeof st->buf) {
             n = sizeof st->buf;
         }
-        err = flash_read(st, slot, done, st->buf, n);
+        err = flash_read(st, addr + done, st->buf, n);
         if (err) {
             return err;
         }
@@ -173,17 +179,17 @@ static int judge_slot(struct calstore *st, unsigned slot, const struct calrec_bi
                       struct calstore_slot_info *si)
 {
     const uint32_t prog = st->cfg.prog_size;
+    const uint32_t clen = commit_len(prog);
+    const uint32_t base = st->cfg.slot_addr[slot];
     uint8_t unit[CALSTORE_PROG_MAX];
-    uint8_t want[CALSTORE_PROG_MAX];
-    uint32_t magic, length, seq, clen, coff, crc, i;
-    bool erased;
+    uint32_t magic, length, seq, crc;
     int err;
 
     si->status = INC_ERR_CRC;
     si->intact = false;
     si->seq = 0;
 
-    err = flash_read(st, slot, 0, st->buf, CALREC_HEADER_SIZE);
+    err = flash_read(st, base, st->buf, CALREC_HEADER_SIZE);
     if (err) {
         return err;
     }
@@ -194,36 +200,29 @@ static int judge_slot(struct calstore *st, unsigned slot, const struct calrec_bi
     if (magic != CALREC_MAGIC) {
         /* Never written, or garbage (torn erase, torn first program). "Empty" means every byte
          * a version-2 save would program is erased. */
-        err = region_erased(st, slot, 0, st->commit_off + commit_len(prog), &erased);
-        if (err) {
+        err = region_differs(st, base, st->commit_off + clen, NULL);
+        if (err < 0) {
             return err;
         }
-        si->status = erased ? INC_ERR_NOT_CALIBRATED : INC_ERR_CRC;
+        si->status = err ? INC_ERR_CRC : INC_ERR_NOT_CALIBRATED;
         return INC_OK;
     }
     /* The declared length must leave room for the commit unit inside the slot. A length that
      * does not is a corrupt header (or a record too big for this geometry): not intact. */
-    clen = commit_len(prog);
     if (length % 4u != 0u || length < CALREC_MIN_SIZE || length > st->cfg.slot_size - clen ||
         round_up(length, prog) > st->cfg.slot_size - clen) {
         return INC_OK;
     }
-    coff = round_up(length, prog);
-    err = flash_read(st, slot, coff, unit, clen);
+    commit_fill(unit, clen);
+    err = region_differs(st, base + round_up(length, prog), clen, unit);
+    if (err) {
+        return err < 0 ? err : INC_OK; /* 1: save not completed (or its commit unit damaged) */
+    }
+    err = region_crc(st, base, length - 4u, &crc);
     if (err) {
         return err;
     }
-    commit_fill(want, clen);
-    for (i = 0; i < clen; i++) {
-        if (unit[i] != want[i]) {
-            return INC_OK; /* save not completed (or its commit unit damaged) */
-        }
-    }
-    err = region_crc(st, slot, length - 4u, &crc);
-    if (err) {
-        return err;
-    }
-    err = flash_read(st, slot, length - 4u, unit, 4u);
+    err = flash_read(st, base + length - 4u, unit, 4u);
     if (err) {
         return err;
     }
@@ -237,7 +236,7 @@ static int judge_slot(struct calstore *st, unsigned slot, const struct calrec_bi
         si->status = INC_ERR_VERSION; /* intact, but not a version this firmware can read */
         return INC_OK;
     }
-    err = flash_read(st, slot, 0, st->buf, length);
+    err = flash_read(st, base, st->buf, length);
     if (err) {
         return err;
     }
@@ -259,17 +258,24 @@ static int newest(const struct calstore_slot_info s[2], bool use0, bool use1)
     return use1 ? 1 : -1;
 }
 
+/*
+ * Judge both slots into info->slot[]. Returns a driver error, else 0 with pick[0] = the newest
+ * valid slot (status INC_OK) and pick[1] = the newest intact slot, each -1 if there is none.
+ */
 static int judge_both(struct calstore *st, const struct calrec_binding *expect,
-                      struct calstore_info *info)
+                      struct calstore_info *info, int pick[2])
 {
-    unsigned s;
+    const struct calstore_slot_info *s = info->slot;
+    unsigned i;
 
-    for (s = 0; s < 2u; s++) {
-        int err = judge_slot(st, s, expect, &info->slot[s]);
+    for (i = 0; i < 2u; i++) {
+        int err = judge_slot(st, i, expect, &info->slot[i]);
         if (err) {
             return err;
         }
     }
+    pick[0] = newest(s, s[0].status == INC_OK, s[1].status == INC_OK);
+    pick[1] = newest(s, s[0].intact, s[1].intact);
     return INC_OK;
 }
 
@@ -285,6 +291,14 @@ static void info_clear(struct calstore_info *info)
     info->seq = 0;
 }
 
+/* The info a load or save fills in: the caller's, else *local; cleared either way. */
+static struct calstore_info *info_begin(struct calstore_info *info, struct calstore_info *local)
+{
+    struct calstore_info *inf = (info != NULL) ? info : local;
+    info_clear(inf);
+    return inf;
+}
+
 static bool store_ready(const struct calstore *st)
 {
     return st->init_magic == CALSTORE_INIT_MAGIC;
@@ -294,14 +308,10 @@ int calstore_load(struct calstore *st, const struct calrec_binding *expect, stru
                   struct calstore_info *info)
 {
     struct calstore_info local;
-    struct calstore_info *inf;
-    const struct calstore_slot_info *s;
-    int pick, err;
+    struct calstore_info *inf = info_begin(info, &local);
+    const struct calstore_slot_info *s = inf->slot;
+    int pick[2], err;
 
-    info_clear(&local);
-    inf = (info != NULL) ? info : &local;
-    info_clear(inf);
-    s = inf->slot;
     if (out == NULL) {
         return INC_ERR_NULL;
     }
@@ -316,24 +326,22 @@ int calstore_load(struct calstore *st, const struct calrec_binding *expect, stru
     if (err) {
         return err;
     }
-    err = judge_both(st, expect, inf);
+    err = judge_both(st, expect, inf, pick);
     if (err) {
         return err;
     }
-    pick = newest(s, s[0].status == INC_OK, s[1].status == INC_OK);
-    if (pick < 0) {
+    if (pick[0] < 0) {
         /* Nothing usable. Report why, most specific first: what is wrong with the newest intact
          * record; else damage; else the flash is simply empty. */
-        pick = newest(s, s[0].intact, s[1].intact);
-        if (pick >= 0) {
-            return s[pick].status;
+        if (pick[1] >= 0) {
+            return s[pick[1]].status;
         }
         if (s[0].status == INC_ERR_CRC || s[1].status == INC_ERR_CRC) {
             return INC_ERR_CRC;
         }
         return INC_ERR_NOT_CALIBRATED;
     }
-    err = flash_read(st, (unsigned)pick, 0, st->buf, CALREC_IMAGE_SIZE);
+    err = flash_read(st, st->cfg.slot_addr[pick[0]], st->buf, CALREC_IMAGE_SIZE);
     if (err) {
         return err;
     }
@@ -341,26 +349,20 @@ int calstore_load(struct calstore *st, const struct calrec_binding *expect, stru
     if (err) {
         return err; /* out is the safe default */
     }
-    inf->used_slot = pick;
-    inf->seq = s[pick].seq;
+    inf->used_slot = pick[0];
+    inf->seq = s[pick[0]].seq;
     return INC_OK;
 }
 
 int calstore_save(struct calstore *st, const struct calrec *rec, struct calstore_info *info)
 {
     struct calstore_info local;
-    struct calstore_info *inf;
-    const struct calstore_slot_info *s;
+    struct calstore_info *inf = info_begin(info, &local);
     uint8_t unit[CALSTORE_PROG_MAX];
-    uint8_t back[CALSTORE_PROG_MAX];
-    uint32_t seq, body, clen, off, i;
+    uint32_t seq, body, clen, off, i, base;
     unsigned target;
-    int keep, err;
+    int pick[2], keep, err;
 
-    info_clear(&local);
-    inf = (info != NULL) ? info : &local;
-    info_clear(inf);
-    s = inf->slot;
     if (st == NULL || rec == NULL) {
         return INC_ERR_NULL;
     }
@@ -374,16 +376,14 @@ int calstore_save(struct calstore *st, const struct calrec *rec, struct calstore
     /* Keep what a load would return now (the newest valid record); failing that, the newest
      * intact one. The new record goes to the other slot with the kept sequence number + 1, so
      * it is newer than everything intact that survives the save. */
-    err = judge_both(st, &rec->binding, inf);
+    err = judge_both(st, &rec->binding, inf, pick);
     if (err) {
         return err;
     }
-    keep = newest(s, s[0].status == INC_OK, s[1].status == INC_OK);
-    if (keep < 0) {
-        keep = newest(s, s[0].intact, s[1].intact);
-    }
+    keep = (pick[0] >= 0) ? pick[0] : pick[1];
     target = (keep == 0) ? 1u : 0u;
-    seq = (keep >= 0) ? s[keep].seq + 1u : 1u; /* wraps modulo 2^32 by design */
+    base = st->cfg.slot_addr[target];
+    seq = (keep >= 0) ? inf->slot[keep].seq + 1u : 1u; /* wraps modulo 2^32 by design */
 
     err = calrec_encode(rec, seq, st->buf, sizeof st->buf);
     if (err) {
@@ -396,48 +396,32 @@ int calstore_save(struct calstore *st, const struct calrec *rec, struct calstore
 
     /* 1. Erase the target slot, page by page. */
     for (off = 0; off < st->cfg.slot_size; off += st->cfg.page_size) {
-        err = st->cfg.ops->erase(st->cfg.ctx, st->cfg.slot_addr[target] + off);
+        err = st->cfg.ops->erase(st->cfg.ctx, base + off);
         if (err) {
             return err;
         }
     }
     /* 2. Program the image. */
-    err = st->cfg.ops->program(st->cfg.ctx, st->cfg.slot_addr[target], st->buf, body);
+    err = st->cfg.ops->program(st->cfg.ctx, base, st->buf, body);
     if (err) {
         return err;
     }
     /* 3. Read it back before committing: a save that did not program correctly must never
      *    become visible. Compared in small pieces so st->buf stays the reference. */
-    for (off = 0; off < body; off += sizeof back) {
-        uint32_t n = body - off;
-        if (n > sizeof back) {
-            n = sizeof back;
-        }
-        err = flash_read(st, target, off, back, n);
-        if (err) {
-            return err;
-        }
-        for (i = 0; i < n; i++) {
-            if (back[i] != st->buf[off + i]) {
-                return INC_ERR_IO;
-            }
-        }
+    err = region_differs(st, base, body, st->buf);
+    if (err) {
+        return err < 0 ? err : INC_ERR_IO;
     }
     /* 4. Commit: the last program step of a save. */
     clen = commit_len(st->cfg.prog_size);
     commit_fill(unit, clen);
-    err = st->cfg.ops->program(st->cfg.ctx, st->cfg.slot_addr[target] + body, unit, clen);
+    err = st->cfg.ops->program(st->cfg.ctx, base + body, unit, clen);
     if (err) {
         return err;
     }
-    err = flash_read(st, target, body, back, clen);
+    err = region_differs(st, base + body, clen, unit);
     if (err) {
-        return err;
-    }
-    for (i = 0; i < clen; i++) {
-        if (back[i] != unit[i]) {
-            return INC_ERR_IO;
-        }
+        return err < 0 ? err : INC_ERR_IO;
     }
     inf->used_slot = (int)target;
     inf->seq = seq;

@@ -21,8 +21,9 @@
  * and followed by the CRC-32:
  *     0 magic "ICAL"   4 version   8 length   12 seq   16..39 binding   40..651 coefficients
  *   652 CRC-32 of bytes 0..651.
- * The struct is never copied to or from flash as memory: padding and byte order of the C struct
- * do not matter, the codec below writes each field explicitly.
+ * The struct is never copied to or from flash as memory: its byte order does not matter, the
+ * codec writes each field explicitly as a little-endian word. (calrec.c walks the struct by word
+ * index and asserts at compile time that it has no padding before `valid`.)
  *
  * Invariant of ALL format versions (so that any firmware can judge any record's integrity and
  * age): magic at 0, version at 4, length (total bytes including the CRC, a multiple of 4) at 8,
