@@ -46,9 +46,26 @@ int adis_read_regs_tail(struct spi_dev *dev, const uint8_t *addrs, uint16_t *val
     return INC_OK;
 }
 
+/* The same two frames as adis_read_regs(dev, &addr, value, 1), in a frame of its own: a register
+ * read inside a sample read (DIAG_STAT) is on the deepest stack path of the small images, and
+ * the pipelined read's buffers are sized for 33 frames. */
 int adis_read_reg(struct spi_dev *dev, uint8_t addr, uint16_t *value)
 {
-    return adis_read_regs(dev, &addr, value, 1u);
+    uint16_t tx[2], rx[2];
+    int err;
+    if (dev == NULL || value == NULL) {
+        return INC_ERR_NULL;
+    }
+    if (addr > ADIS_ADDR_MAX) {
+        return INC_ERR_INVAL;
+    }
+    tx[0] = read_cmd(addr);
+    tx[1] = read_cmd(0x00u);
+    err = spi_transfer(dev, tx, rx, 2u, SPI_CS_TOGGLE);
+    if (err == INC_OK) {
+        *value = rx[1];
+    }
+    return err;
 }
 
 int adis_write_byte(struct spi_dev *dev, uint8_t addr, uint8_t value)

@@ -12,45 +12,19 @@
 
 #define NS_PER_MS 1000000ull
 
+/* Helpers called from several places stay out of line: the M0+ image counts every byte. */
+#define NOINLINE __attribute__((noinline))
+
 /* The part's channel -> register address, per family (0 = the family has no such channel;
- * address 0x00 is FLASH_CNT, never an output). docs/sensor-facts.md §3.2. */
+ * address 0x00 is FLASH_CNT, never an output). docs/sensor-facts.md §3.2. Every address here is
+ * inside the family's burst (burst word i = register 0x02 + 2 i, so the word of address a is rx[a
+ * / 2] after the command frame): the burst is read through this table too. */
 static const uint8_t chan_addr[2][ADIS_IMU_CH_COUNT] = {
     /* 1636x: SUPPLY, gyro xyz, accel xyz, (no magn), XTEMP YTEMP ZTEMP, AUX_ADC */
     {0x02, 0x04, 0x06, 0x08, 0x0A, 0x0C, 0x0E, 0, 0, 0, 0x10, 0x12, 0x14, 0x16},
     /* 1640x: SUPPLY, gyro xyz, accel xyz, magn xyz, TEMP_OUT, (no), (no), AUX_ADC */
     {0x02, 0x04, 0x06, 0x08, 0x0A, 0x0C, 0x0E, 0x10, 0x12, 0x14, 0x16, 0, 0, 0x18},
 };
-
-/* The inverse for the burst: burst word i (register 0x02 + 2 i) -> channel, per family
- * (BURST_NONE: no channel). adis_imu_init checks it against chan_addr. */
-#define BURST_NONE 0xFFu
-#define BURST_MAX 12u
-static const uint8_t burst_chan[2][BURST_MAX] = {
-    {0, 1, 2, 3, 4, 5, 6, 10, 11, 12, 13, BURST_NONE},
-    {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 13},
-};
-
-/* burst_chan is the inverse of chan_addr for every word of a burst. */
-static bool burst_map_ok(void)
-{
-    unsigned f, i, ch;
-    for (f = 0; f < 2u; f++) {
-        for (i = 0; i < BURST_MAX; i++) {
-            const uint8_t addr = (uint8_t)(0x02u + 2u * i);
-            unsigned want = BURST_NONE;
-            for (ch = 0; ch < (unsigned)ADIS_IMU_CH_COUNT; ch++) {
-                if (chan_addr[f][ch] == addr) {
-                    want = ch;
-                    break;
-                }
-            }
-            if (burst_chan[f][i] != want) {
-                return false;
-            }
-        }
-    }
-    return true;
-}
 
 /* ---- timing ---- */
 
@@ -69,17 +43,25 @@ static void timing_for(bool low_power, bool burst, struct spi_timing *t)
     t->gap_ns = burst ? (period > ADIS_IMU_BURST_GAP_NS ? period : ADIS_IMU_BURST_GAP_NS) : 0u;
 }
 
-static int set_mode_timing(struct adis_imu *dev, bool low_power)
+/* Re-time the bus for low_power (mode) and burst (kind of read). */
+static NOINLINE int set_timing(struct adis_imu *dev, bool low_power, bool burst)
 {
     struct spi_timing t;
-    timing_for(low_power, false, &t);
-    dev->low_power = low_power;
+    timing_for(low_power, burst, &t);
     return spi_dev_set_timing(&dev->spi, &t);
+}
+
+static int set_mode_timing(struct adis_imu *dev, bool low_power)
+{
+    dev->low_power = low_power;
+    return set_timing(dev, low_power, false);
 }
 
 /* ---- busy handling ---- */
 
 static int resync(struct adis_imu *dev);
+
+_Static_assert(ADIS_IMU_CH_COUNT <= ADIS_MAX_PIPELINE, "every channel in one pipelined read");
 
 /* Wait until the part has finished the last command. 0 = nothing pending: once the time has
  * passed it is cleared, so the sample path does not read the clock for it. */
@@ -120,22 +102,30 @@ static void start_busy(struct adis_imu *dev, uint32_t ms)
 
 /* ---- data-ready ---- */
 
-static int write_dr(struct adis_imu *dev, bool enable, enum adis_imu_dr_line line, bool active_low)
+/* The MSC_CTRL data-ready bits (all in the low byte) for a setting; 0 when disabled. */
+static NOINLINE uint16_t dr_bits(bool enable, unsigned line, bool active_low)
 {
-    uint16_t msc = (uint16_t)(dev->msc_ctrl & ~(ADIS_IMU_MSC_DR_EN | ADIS_IMU_MSC_DR_POL_HIGH |
-                                                ADIS_IMU_MSC_DR_LINE_DIO2));
-    int err;
+    uint16_t bits = 0u;
     if (enable) {
-        msc |= ADIS_IMU_MSC_DR_EN;
+        bits = ADIS_IMU_MSC_DR_EN;
         if (!active_low) {
-            msc |= ADIS_IMU_MSC_DR_POL_HIGH;
+            bits |= ADIS_IMU_MSC_DR_POL_HIGH;
         }
-        if (line == ADIS_IMU_DR_DIO2) {
-            msc |= ADIS_IMU_MSC_DR_LINE_DIO2;
+        if (line == (unsigned)ADIS_IMU_DR_DIO2) {
+            bits |= ADIS_IMU_MSC_DR_LINE_DIO2;
         }
     }
+    return bits;
+}
+
+#define DR_MASK (ADIS_IMU_MSC_DR_EN | ADIS_IMU_MSC_DR_POL_HIGH | ADIS_IMU_MSC_DR_LINE_DIO2)
+
+/* Write the data-ready bits of MSC_CTRL (dr_bits), the other bits as cached. */
+static int write_dr(struct adis_imu *dev, uint16_t bits)
+{
+    const uint16_t msc = (uint16_t)((dev->msc_ctrl & ~DR_MASK) | bits);
     /* The data-ready bits are all in the low byte: one frame. */
-    err = adis_write_byte(&dev->spi, ADIS_IMU_REG_MSC_CTRL, (uint8_t)(msc & 0xFFu));
+    const int err = adis_write_byte(&dev->spi, ADIS_IMU_REG_MSC_CTRL, (uint8_t)(msc & 0xFFu));
     if (err == INC_OK) {
         dev->msc_ctrl = msc;
     }
@@ -144,34 +134,50 @@ static int write_dr(struct adis_imu *dev, bool enable, enum adis_imu_dr_line lin
 
 /* ---- resync after reset / at init ---- */
 
+/* The registers init reads; resync reads the three mode registers among them. */
+static const uint8_t id_addrs[5] = {ADIS_IMU_REG_PROD_ID, ADIS_IMU_REG_SMPL_PRD,
+                                    ADIS_IMU_REG_SENS_AVG, ADIS_IMU_REG_MSC_CTRL,
+                                    ADIS_IMU_REG_DIAG_STAT};
+
+/* Cache SMPL_PRD, SENS_AVG and MSC_CTRL as read (v[0..2]) and time the bus for the mode. */
+static int apply_mode(struct adis_imu *dev, const uint16_t *v)
+{
+    dev->smpl_prd = (uint16_t)(v[0] & 0xFFu);
+    dev->sens_avg = v[1];
+    dev->msc_ctrl = v[2];
+    return set_mode_timing(dev, adis_imu_smpl_prd_is_low_power((uint8_t)dev->smpl_prd));
+}
+
 /* Read the mode registers (at the low-power limits, safe in either mode) and re-time the bus. */
 static int resync(struct adis_imu *dev)
 {
-    static const uint8_t addrs[3] = {ADIS_IMU_REG_SMPL_PRD, ADIS_IMU_REG_SENS_AVG,
-                                     ADIS_IMU_REG_MSC_CTRL};
     uint16_t v[3];
     int err = set_mode_timing(dev, true);
     if (err == INC_OK) {
-        err = adis_read_regs(&dev->spi, addrs, v, 3u);
+        err = adis_read_regs(&dev->spi, &id_addrs[1], v, 3u);
     }
     if (err != INC_OK) {
         return err;
     }
-    dev->smpl_prd = (uint16_t)(v[0] & 0xFFu);
-    dev->sens_avg = v[1];
-    dev->msc_ctrl = v[2];
-    err = set_mode_timing(dev, adis_imu_smpl_prd_is_low_power((uint8_t)dev->smpl_prd));
+    err = apply_mode(dev, v);
     dev->resync_pending = false;
     /* A reset restores MSC_CTRL from flash: put data-ready back as configured. */
     if (err == INC_OK && dev->dr_enabled) {
-        const uint16_t want =
-            (uint16_t)(ADIS_IMU_MSC_DR_EN | (dev->dr_active_low ? 0u : ADIS_IMU_MSC_DR_POL_HIGH) |
-                       (dev->dr_line == ADIS_IMU_DR_DIO2 ? ADIS_IMU_MSC_DR_LINE_DIO2 : 0u));
-        if ((dev->msc_ctrl & 0x0007u) != want) {
-            err = write_dr(dev, true, (enum adis_imu_dr_line)dev->dr_line, dev->dr_active_low);
+        const uint16_t want = dr_bits(true, dev->dr_line, dev->dr_active_low);
+        if ((dev->msc_ctrl & DR_MASK) != want) {
+            err = write_dr(dev, want);
         }
     }
     return err;
+}
+
+/* Zero n bytes without libc. */
+static NOINLINE void zero(void *p, size_t n)
+{
+    uint8_t *b = p;
+    while (n-- != 0u) {
+        *b++ = 0u;
+    }
 }
 
 /* ---- init ---- */
@@ -213,9 +219,6 @@ static uint32_t reset_ms_for(uint8_t variant)
 
 int adis_imu_init(struct adis_imu *dev, const struct adis_imu_cfg *cfg)
 {
-    static const uint8_t addrs[5] = {ADIS_IMU_REG_PROD_ID, ADIS_IMU_REG_SMPL_PRD,
-                                     ADIS_IMU_REG_SENS_AVG, ADIS_IMU_REG_MSC_CTRL,
-                                     ADIS_IMU_REG_DIAG_STAT};
     struct spi_dev_cfg dc;
     uint16_t v[5];
     uint8_t found;
@@ -224,21 +227,11 @@ int adis_imu_init(struct adis_imu *dev, const struct adis_imu_cfg *cfg)
     if (dev == NULL || cfg == NULL) {
         return INC_ERR_NULL;
     }
-    {
-        /* Zero the whole state without libc. */
-        uint8_t *p = (uint8_t *)dev;
-        size_t i;
-        for (i = 0; i < sizeof(*dev); i++) {
-            p[i] = 0;
-        }
-    }
+    zero(dev, sizeof(*dev));
     dev->found_variant = (uint8_t)ADIS_IMU_UNKNOWN;
     err = check_cfg(cfg);
     if (err != INC_OK) {
         return err;
-    }
-    if (!burst_map_ok()) {
-        return INC_ERR_STATE; /* the driver's own tables disagree: never a wrong channel */
     }
     dev->cfg = *cfg;
     /* Start at the low-power limits: valid whatever mode the part is in (Linux does the same,
@@ -263,7 +256,7 @@ int adis_imu_init(struct adis_imu *dev, const struct adis_imu_cfg *cfg)
         start_busy(dev, reset_ms_for(cfg->variant));
         wait_busy(dev);
     }
-    err = adis_read_regs(&dev->spi, addrs, v, 5u);
+    err = adis_read_regs(&dev->spi, id_addrs, v, 5u);
     if (err != INC_OK) {
         return err;
     }
@@ -284,12 +277,9 @@ int adis_imu_init(struct adis_imu *dev, const struct adis_imu_cfg *cfg)
         return INC_ERR_BUS;
     }
     dev->info = adis_imu_variant_info((enum adis_imu_variant)found);
-    dev->smpl_prd = (uint16_t)(v[1] & 0xFFu);
-    dev->sens_avg = v[2];
-    dev->msc_ctrl = v[3];
     dev->init_diag = v[4];
     dev->last_diag = v[4];
-    err = set_mode_timing(dev, adis_imu_smpl_prd_is_low_power((uint8_t)dev->smpl_prd));
+    err = apply_mode(dev, &v[1]);
     if (err != INC_OK) {
         return err;
     }
@@ -331,57 +321,43 @@ static unsigned family(const struct adis_imu *dev)
     return dev->info->family;
 }
 
-static void chan_format(const struct adis_imu *dev, unsigned ch, unsigned *bits, bool *is_signed)
-{
-    switch ((enum adis_imu_chan)ch) {
-    case ADIS_IMU_CH_SUPPLY:
-        *bits = dev->info->supply_bits;
-        *is_signed = false;
-        break;
-    case ADIS_IMU_CH_TEMP0:
-    case ADIS_IMU_CH_TEMP1:
-    case ADIS_IMU_CH_TEMP2:
-        *bits = 12u;
-        *is_signed = true;
-        break;
-    case ADIS_IMU_CH_AUX:
-        *bits = 12u;
-        *is_signed = false;
-        break;
-    default: /* gyro, accel, magn */
-        *bits = 14u;
-        *is_signed = true;
-        break;
-    }
-}
-
 static void sample_clear(const struct adis_imu *dev, struct adis_imu_sample *out, uint64_t t)
 {
-    unsigned i;
+    zero(out, sizeof(*out));
     out->gyro_range = (uint8_t)adis_imu_gyro_range(dev);
-    for (i = 0; i < (unsigned)ADIS_IMU_CH_COUNT; i++) {
-        out->raw[i] = 0;
-        out->counts[i] = 0;
-    }
-    out->present = 0;
-    out->valid = 0;
-    out->stale = 0;
-    out->diag = 0;
     out->t_ns = t;
 }
 
-static void sample_put(const struct adis_imu *dev, struct adis_imu_sample *out, unsigned ch,
-                       uint16_t word)
+/* The words of the channels in mask that the part has, w[address / 2] (as a burst returns them
+ * after its command frame), into a cleared sample: raw, counts (data field sign-extended for
+ * gyro, accel, magn (14 bits) and temperatures (12 bits), masked for SUPPLY_OUT (the variant's
+ * width) and AUX_ADC (12 bits)), present and stale (ND clear). */
+static void sample_fill(const struct adis_imu *dev, struct adis_imu_sample *out, unsigned mask,
+                        const uint16_t *w)
 {
-    unsigned bits;
-    bool sgn;
-    chan_format(dev, ch, &bits, &sgn);
-    out->raw[ch] = word;
-    out->counts[ch] = sgn ? adis_sign_extend(word, bits) : (int32_t)adis_field(word, bits);
-    out->present |= (uint16_t)ADIS_IMU_CH(ch);
-    if ((word & ADIS_FLAG_ND) == 0u) {
-        out->stale |= (uint16_t)ADIS_IMU_CH(ch);
+    const uint8_t *addr = chan_addr[family(dev)];
+    unsigned ch, present = 0u, stale = 0u;
+    for (ch = 0; ch < (unsigned)ADIS_IMU_CH_COUNT; ch++) {
+        const unsigned a = addr[ch];
+        if (a != 0u && (mask & ADIS_IMU_CH(ch)) != 0u) {
+            const uint16_t word = w[a / 2u];
+            unsigned bits = ch >= (unsigned)ADIS_IMU_CH_TEMP0 ? 12u : 14u;
+            if (ch == (unsigned)ADIS_IMU_CH_SUPPLY) {
+                bits = dev->info->supply_bits;
+            }
+            out->raw[ch] = word;
+            out->counts[ch] = (ch == (unsigned)ADIS_IMU_CH_SUPPLY ||
+                               ch == (unsigned)ADIS_IMU_CH_AUX)
+                                  ? (int32_t)adis_field(word, bits)
+                                  : adis_sign_extend(word, bits);
+            present |= ADIS_IMU_CH(ch);
+            if ((word & ADIS_FLAG_ND) == 0u) {
+                stale |= ADIS_IMU_CH(ch);
+            }
+        }
     }
+    out->present = (uint16_t)present;
+    out->stale = (uint16_t)stale;
 }
 
 static bool all_stuck(const uint16_t *w, size_t n)
@@ -421,7 +397,7 @@ static int read_diag_raw(struct adis_imu *dev, uint16_t *diag)
 static int sample_finish(struct adis_imu *dev, struct adis_imu_sample *out, const uint16_t *w,
                          size_t n, bool stuck)
 {
-    bool ea = false;
+    unsigned any = 0u; /* the words ORed: EA in any */
     size_t i;
     if (stuck) {
         dev->bus_errors++;
@@ -429,11 +405,9 @@ static int sample_finish(struct adis_imu *dev, struct adis_imu_sample *out, cons
         return INC_ERR_BUS;
     }
     for (i = 0; i < n; i++) {
-        if ((w[i] & ADIS_FLAG_EA) != 0u) {
-            ea = true;
-        }
+        any |= w[i];
     }
-    if (ea) {
+    if ((any & ADIS_FLAG_EA) != 0u) {
         uint16_t d = 0;
         int err;
         out->valid = 0;
@@ -456,8 +430,7 @@ static int sample_finish(struct adis_imu *dev, struct adis_imu_sample *out, cons
 int adis_imu_read_sample(struct adis_imu *dev, struct adis_imu_sample *out)
 {
     uint16_t rx[1u + 12u];
-    struct spi_timing t;
-    size_t n, i;
+    size_t n;
     int err, err2;
     if (out == NULL) {
         return INC_ERR_NULL;
@@ -468,8 +441,7 @@ int adis_imu_read_sample(struct adis_imu *dev, struct adis_imu_sample *out)
     }
     n = dev->info->burst_words;
     sample_clear(dev, out, hal_now_ns(dev->cfg.hal));
-    timing_for(dev->low_power, true, &t);
-    err = spi_dev_set_timing(&dev->spi, &t);
+    err = set_timing(dev, dev->low_power, true);
     if (err == INC_OK) {
         /* DIN 0x3E00, then zeros while the part streams the outputs (docs/sensor-facts.md §3.1). */
         const uint16_t tx[1u + 12u] = {ADIS_IMU_BURST_CMD};
@@ -484,12 +456,7 @@ int adis_imu_read_sample(struct adis_imu *dev, struct adis_imu_sample *out)
     }
     dev->bursts++;
     /* Burst words are the output registers in address order from SUPPLY_OUT (0x02). */
-    for (i = 0; i < n && i < BURST_MAX; i++) {
-        const uint8_t ch = burst_chan[family(dev)][i];
-        if (ch != BURST_NONE) {
-            sample_put(dev, out, ch, rx[1u + i]);
-        }
-    }
+    sample_fill(dev, out, ADIS_IMU_CH_ALL, rx);
     /* A live part always reports a supply in range, so n equal 0x0000/0xFFFF words are a bus
      * fault whatever the data. */
     return sample_finish(dev, out, &rx[1], n, all_stuck(&rx[1], n));
@@ -498,8 +465,8 @@ int adis_imu_read_sample(struct adis_imu *dev, struct adis_imu_sample *out)
 int adis_imu_read_channels(struct adis_imu *dev, uint16_t mask, struct adis_imu_sample *out)
 {
     uint8_t addrs[ADIS_IMU_CH_COUNT];
-    uint8_t chans[ADIS_IMU_CH_COUNT];
     uint16_t v[ADIS_IMU_CH_COUNT];
+    uint16_t w[0x1Au / 2u] = {0}; /* v by address / 2, for sample_fill */
     size_t n = 0, i;
     bool stuck;
     unsigned ch;
@@ -514,9 +481,7 @@ int adis_imu_read_channels(struct adis_imu *dev, uint16_t mask, struct adis_imu_
     for (ch = 0; ch < (unsigned)ADIS_IMU_CH_COUNT; ch++) {
         const uint8_t a = chan_addr[family(dev)][ch];
         if ((mask & ADIS_IMU_CH(ch)) != 0u && a != 0u) {
-            addrs[n] = a;
-            chans[n] = (uint8_t)ch;
-            n++;
+            addrs[n++] = a;
         }
     }
     if (n == 0u) {
@@ -529,8 +494,9 @@ int adis_imu_read_channels(struct adis_imu *dev, uint16_t mask, struct adis_imu_
     }
     dev->reg_reads++;
     for (i = 0; i < n; i++) {
-        sample_put(dev, out, chans[i], v[i]);
+        w[addrs[i] / 2u] = v[i];
     }
+    sample_fill(dev, out, mask, w);
     stuck = all_stuck(v, n);
     if (stuck) {
         /* Equal 0x0000 words can be a still part read twice (ND clear, zero data): ask for
@@ -711,29 +677,25 @@ static unsigned range_min_m(enum adis_imu_range r)
 int adis_imu_set_filter(struct adis_imu *dev, unsigned taps_log2, enum adis_imu_range range)
 {
     const unsigned min_m = range_min_m(range);
-    unsigned old_m;
+    unsigned k;
+    bool range_first;
     int err;
     if (taps_log2 > ADIS_IMU_SENS_AVG_M_MAX || min_m > ADIS_IMU_SENS_AVG_M_MAX ||
         taps_log2 < min_m) {
-        return check_ready(dev) != INC_OK ? check_ready(dev) : INC_ERR_INVAL;
+        err = check_ready(dev);
+        return err != INC_OK ? err : INC_ERR_INVAL;
     }
     err = enter(dev);
     if (err != INC_OK) {
         return err;
     }
-    old_m = dev->sens_avg & ADIS_IMU_SENS_AVG_M_MASK;
     /* Byte order keeps every intermediate setting legal: when the taps shrink, widen the range
-     * first; when they grow, add taps first. */
-    if (taps_log2 < old_m) {
-        err = adis_write_byte(&dev->spi, ADIS_IMU_REG_SENS_AVG + 1u, (uint8_t)range);
-        if (err == INC_OK) {
-            err = adis_write_byte(&dev->spi, ADIS_IMU_REG_SENS_AVG, (uint8_t)taps_log2);
-        }
-    } else {
-        err = adis_write_byte(&dev->spi, ADIS_IMU_REG_SENS_AVG, (uint8_t)taps_log2);
-        if (err == INC_OK) {
-            err = adis_write_byte(&dev->spi, ADIS_IMU_REG_SENS_AVG + 1u, (uint8_t)range);
-        }
+     * (high byte) first; when they grow, add taps (low byte) first. */
+    range_first = taps_log2 < (dev->sens_avg & ADIS_IMU_SENS_AVG_M_MASK);
+    for (k = 0; k < 2u && err == INC_OK; k++) {
+        const bool high = (k == 0u) == range_first;
+        err = adis_write_byte(&dev->spi, (uint8_t)(ADIS_IMU_REG_SENS_AVG + (high ? 1u : 0u)),
+                              (uint8_t)(high ? (unsigned)range : taps_log2));
     }
     if (err == INC_OK) {
         dev->sens_avg = (uint16_t)((unsigned)range << ADIS_IMU_SENS_AVG_RANGE_SHIFT | taps_log2);
@@ -921,7 +883,7 @@ int adis_imu_dr_config(struct adis_imu *dev, bool enable, enum adis_imu_dr_line 
         return err;
     }
     hal = dev->cfg.hal;
-    err = write_dr(dev, enable, line, active_low);
+    err = write_dr(dev, dr_bits(enable, (unsigned)line, active_low));
     if (err != INC_OK) {
         return err;
     }
@@ -953,7 +915,8 @@ int adis_imu_wait_ready(struct adis_imu *dev, uint32_t timeout_ns, uint32_t *mis
     }
     hal = dev->cfg.hal;
     if (timeout_ns == 0u) {
-        timeout_ns = 3u * adis_imu_current_period_ns(dev);
+        /* adis_imu_current_period_ns of a ready driver */
+        timeout_ns = 3u * adis_imu_sample_period_ns((uint8_t)dev->smpl_prd);
     }
     deadline = hal_now_ns(hal) + timeout_ns;
     err = sensor_dr_wait(hal, &dev->dr, deadline, &pending);

@@ -49,8 +49,12 @@ const struct hal *adis_imu_hal(const struct adis_imu *dev)
 
 int adis_imu_read_identity(struct adis_imu *dev, struct sensor_identity *out)
 {
-    uint16_t prod = 0, serial = 0, lot1 = 0, lot2 = 0;
-    int err;
+    /* The 1636x has a serial number and lot ids (the calrec.h binding table). */
+    static const uint8_t addrs[3] = {ADIS1636X_REG_SERIAL_NUM, ADIS1636X_REG_LOT_ID1,
+                                     ADIS1636X_REG_LOT_ID2};
+    uint16_t id[3] = {0, 0, 0};
+    unsigned i, n;
+    int err = INC_OK;
     if (dev == NULL || out == NULL) {
         return INC_ERR_NULL;
     }
@@ -58,21 +62,18 @@ int adis_imu_read_identity(struct adis_imu *dev, struct sensor_identity *out)
     if (!dev->ready || dev->info == NULL) {
         return INC_ERR_STATE;
     }
-    err = adis_imu_found(dev, &prod, NULL);
-    if (err == INC_OK && dev->info->family == (uint8_t)ADIS_IMU_FAMILY_1636X) {
-        /* The 1636x has a serial number and lot ids (the calrec.h binding table). */
-        err = adis_imu_read_known(dev, ADIS1636X_REG_SERIAL_NUM, &serial);
-        if (err == INC_OK) err = adis_imu_read_known(dev, ADIS1636X_REG_LOT_ID1, &lot1);
-        if (err == INC_OK) err = adis_imu_read_known(dev, ADIS1636X_REG_LOT_ID2, &lot2);
+    n = dev->info->family == (uint8_t)ADIS_IMU_FAMILY_1636X ? 3u : 0u;
+    for (i = 0; i < n && err == INC_OK; i++) {
+        err = adis_imu_read_known(dev, addrs[i], &id[i]);
     }
     if (err != INC_OK) {
         return err;
     }
     out->family = (uint32_t)SENSOR_FAMILY_ADIS163XX;
-    out->product = prod;
-    out->serial = serial;
-    out->lot_id1 = lot1;
-    out->lot_id2 = lot2;
+    out->product = dev->found_id; /* adis_imu_found's: a ready driver has identified its part */
+    out->serial = id[0];
+    out->lot_id1 = id[1];
+    out->lot_id2 = id[2];
     return INC_OK;
 }
 
@@ -104,9 +105,12 @@ static int op_read(void *ctx, struct sensor_sample *out)
 {
     struct adis_imu *dev = ctx;
     struct adis_imu_sample s;
+    const struct adis_imu_variant_info *vi;
     enum adis_imu_family fam;
-    unsigned i;
-    int err;
+    uint32_t flags;
+    int32_t sum = 0; /* three temperatures: |sum| < 2^31 (each < 10000 C in Q16) */
+    unsigned i, nt;
+    int err, bad = 0;
     if (dev == NULL || out == NULL) {
         return INC_ERR_NULL;
     }
@@ -117,52 +121,70 @@ static int op_read(void *ctx, struct sensor_sample *out)
         dev->sensor_missed = err == INC_ERR_STALE ? dev->sensor_missed + 1u : 0u;
         return err;
     }
-    /* A burst that returned 0 has every channel valid. */
-    fam = (enum adis_imu_family)dev->info->family;
-    out->flags = SENSOR_S_HAVE_ACCEL | SENSOR_S_HAVE_GYRO | SENSOR_S_HAVE_TEMP;
-    for (i = 0; i < 3u && err == INC_OK; i++) {
-        const int32_t ca = s.counts[ADIS_IMU_CH_ACCEL_X + i], cg = s.counts[ADIS_IMU_CH_GYRO_X + i];
-        err = adis_imu_accel_g_from_counts(ca, dev->info->accel_lsb_ug, &out->accel_g[i]);
-        if (err == INC_OK) {
-            err = adis_imu_gyro_dps_from_counts(cg, (enum adis_imu_range)s.gyro_range,
-                                                &out->gyro_dps[i]);
+    /* A burst that returned 0 has every channel valid. The conversions fail only with
+     * INC_ERR_INVAL (a range, LSB or family outside the driver's tables): `bad` collects them. */
+    vi = dev->info;
+    fam = (enum adis_imu_family)vi->family;
+    flags = SENSOR_S_HAVE_ACCEL | SENSOR_S_HAVE_GYRO | SENSOR_S_HAVE_TEMP;
+    for (i = 0; i < 3u; i++) {
+        bad |= adis_imu_accel_g_from_counts(s.counts[ADIS_IMU_CH_ACCEL_X + i], vi->accel_lsb_ug,
+                                            &out->accel_g[i]);
+        bad |= adis_imu_gyro_dps_from_counts(s.counts[ADIS_IMU_CH_GYRO_X + i],
+                                             (enum adis_imu_range)s.gyro_range, &out->gyro_dps[i]);
+    }
+    /* SENSOR_S_GYRO_SAT_X << axis for GYRO_X + axis, SENSOR_S_ACCEL_SAT_X << axis for ACCEL_X +
+     * axis. */
+    for (i = ADIS_IMU_CH_GYRO_X; i <= (unsigned)ADIS_IMU_CH_ACCEL_Z; i++) {
+        if (at_end(s.counts[i])) {
+            flags |= (i <= (unsigned)ADIS_IMU_CH_GYRO_Z
+                          ? SENSOR_S_GYRO_SAT_X >> ADIS_IMU_CH_GYRO_X
+                          : SENSOR_S_ACCEL_SAT_X >> ADIS_IMU_CH_ACCEL_X)
+                     << i;
         }
-        if (at_end(ca)) out->flags |= SENSOR_S_ACCEL_SAT_X << i;
-        if (at_end(cg)) out->flags |= SENSOR_S_GYRO_SAT_X << i;
     }
-    if (err == INC_OK && fam == ADIS_IMU_FAMILY_1640X) {
-        err = adis_imu_temp_c_from_counts(s.counts[ADIS_IMU_CH_TEMP0], fam, &out->temp_c);
-    } else if (err == INC_OK) {
-        /* Three gyro temperatures on the 1636x: their mean, rounded (ties away from zero). */
-        struct fx_sum t;
-        fx_sum_reset(&t);
-        for (i = 0; i < 3u && err == INC_OK; i++) {
-            int32_t c = 0;
-            err = adis_imu_temp_c_from_counts(s.counts[ADIS_IMU_CH_TEMP0 + i], fam, &c);
-            (void)fx_sum_add(&t, c);
-        }
-        (void)fx_sum_mean(&t, &out->temp_c);
+    /* TEMP_OUT on the 1640x; the three gyro temperatures on the 1636x: their mean, rounded (ties
+     * away from zero; the mean of one is that value). */
+    nt = fam == ADIS_IMU_FAMILY_1640X ? 1u : 3u;
+    for (i = 0; i < nt; i++) {
+        int32_t c = 0;
+        bad |= adis_imu_temp_c_from_counts(s.counts[ADIS_IMU_CH_TEMP0 + i], fam, &c);
+        sum += c;
     }
-    if (err != INC_OK) {
-        return err; /* the wrapper (sensor_read) zeroes the sample */
+    if (bad != 0) {
+        return INC_ERR_INVAL; /* the wrapper (sensor_read) zeroes the sample */
     }
+    out->temp_c = fx_div64(sum, nt);
+    out->flags = flags;
     out->missed = dev->sensor_missed;
     out->t_ns = s.t_ns;
     dev->sensor_missed = 0u;
     return INC_OK;
 }
 
+/* DIAG_STAT bits behind SENSOR_D_SUPPLY, _SELF_TEST, _OVERRANGE, _BUS, _MEMORY, _ALARM (bits 0..5
+ * of the flags, in this order). */
+static const uint16_t diag_bits[6] = {
+    ADIS_IMU_DIAG_SUPPLY_LOW | ADIS_IMU_DIAG_SUPPLY_HIGH,
+    ADIS_IMU_DIAG_SELF_TEST_BITS,
+    ADIS_IMU_DIAG_OVERRANGE,
+    ADIS_IMU_DIAG_SPI_FAIL,
+    ADIS_IMU_DIAG_FLASH_UPDATE | ADIS_IMU_DIAG_FLASH_CHECKSUM,
+    ADIS_IMU_DIAG_ALARM1 | ADIS_IMU_DIAG_ALARM2,
+};
+_Static_assert(SENSOR_D_SUPPLY == 1u << 0 && SENSOR_D_SELF_TEST == 1u << 1 &&
+                   SENSOR_D_OVERRANGE == 1u << 2 && SENSOR_D_BUS == 1u << 3 &&
+                   SENSOR_D_MEMORY == 1u << 4 && SENSOR_D_ALARM == 1u << 5,
+               "diag_bits is indexed by the SENSOR_D_* bit");
+
 static uint32_t diag_flags(uint16_t d)
 {
     uint32_t f = 0u;
-    if ((d & (ADIS_IMU_DIAG_SUPPLY_LOW | ADIS_IMU_DIAG_SUPPLY_HIGH)) != 0u) f |= SENSOR_D_SUPPLY;
-    if ((d & ADIS_IMU_DIAG_SELF_TEST_BITS) != 0u) f |= SENSOR_D_SELF_TEST;
-    if ((d & ADIS_IMU_DIAG_OVERRANGE) != 0u) f |= SENSOR_D_OVERRANGE;
-    if ((d & ADIS_IMU_DIAG_SPI_FAIL) != 0u) f |= SENSOR_D_BUS;
-    if ((d & (ADIS_IMU_DIAG_FLASH_UPDATE | ADIS_IMU_DIAG_FLASH_CHECKSUM)) != 0u) {
-        f |= SENSOR_D_MEMORY;
+    unsigned i;
+    for (i = 0; i < 6u; i++) {
+        if ((d & diag_bits[i]) != 0u) {
+            f |= 1u << i;
+        }
     }
-    if ((d & (ADIS_IMU_DIAG_ALARM1 | ADIS_IMU_DIAG_ALARM2)) != 0u) f |= SENSOR_D_ALARM;
     return f;
 }
 
@@ -201,8 +223,8 @@ static int op_self_test(void *ctx, struct sensor_diag *out)
     if (err == INC_OK || err == INC_ERR_DEVICE) {
         out->flags = diag_flags(d);
         out->raw = d;
-        if (err == INC_ERR_DEVICE && (out->flags & SENSOR_D_SELF_TEST) == 0u) {
-            out->flags |= SENSOR_D_SELF_TEST;
+        if (err == INC_ERR_DEVICE) {
+            out->flags |= SENSOR_D_SELF_TEST; /* a failed self-test, whatever bits it set */
         }
     }
     return err;
@@ -216,24 +238,20 @@ static int op_identity(void *ctx, struct sensor_identity *out)
 static int op_info(void *ctx, struct sensor_info *out)
 {
     const struct adis_imu *dev = ctx;
-    struct adis_imu_settings st;
-    int err;
     if (dev == NULL || out == NULL) {
         return INC_ERR_NULL;
     }
     out->accel_fs_g = 0;
     out->gyro_fs_dps = 0;
     out->rate_mhz = 0u;
-    err = adis_imu_get_settings(dev, &st);
-    if (err != INC_OK) {
-        return err;
+    if (!dev->ready) {
+        return INC_ERR_STATE; /* as adis_imu_get_settings */
     }
     /* 8192 counts x the LSB: 27.3 g at 3333 ug, 2.7 g at 333 ug, 8.2 g at 1000 ug */
     out->accel_fs_g = fx_div64((int64_t)8192 * dev->info->accel_lsb_ug * 65536, 1000000u);
-    out->gyro_fs_dps = st.range == (uint8_t)ADIS_IMU_RANGE_75    ? FX_Q16_INT(75)
-                       : st.range == (uint8_t)ADIS_IMU_RANGE_150 ? FX_Q16_INT(150)
-                                                                 : FX_Q16_INT(300);
-    out->rate_mhz = adis_imu_sample_rate_msps(st.smpl_prd);
+    /* The range codes 1, 2, 4 (adis_imu_gyro_range gives no other) are 75, 150, 300 / 75. */
+    out->gyro_fs_dps = FX_Q16_INT(75) * (int32_t)adis_imu_gyro_range(dev);
+    out->rate_mhz = adis_imu_sample_rate_msps((uint8_t)dev->smpl_prd);
     return INC_OK;
 }
 

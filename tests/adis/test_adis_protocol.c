@@ -168,6 +168,7 @@ static void test_helpers_and_errors(void)
     CHECK_EQ_HEX(adis_field(0xC814, 12), 0x814);
     CHECK_ERR(adis_read_reg(NULL, 0, &v), INC_ERR_NULL);
     CHECK_ERR(adis_read_reg(&dev, 0, NULL), INC_ERR_NULL);
+    CHECK_ERR(adis_read_reg(&dev, 0x80, &v), INC_ERR_INVAL);
     CHECK_ERR(adis_read_regs(&dev, &a, &v, 1), INC_ERR_INVAL);
     CHECK_ERR(adis_read_regs(&dev, &a, &v, 0), INC_ERR_INVAL);
     CHECK_ERR(adis_read_regs(&dev, &a, &v, ADIS_MAX_PIPELINE + 1u), INC_ERR_INVAL);
@@ -175,10 +176,42 @@ static void test_helpers_and_errors(void)
     CHECK_ERR(adis_write_byte(&dev, 0x80, 0), INC_ERR_INVAL);
     CHECK_ERR(adis_write_byte(NULL, 0x10, 0), INC_ERR_NULL);
     CHECK_EQ_INT(core.reads + core.writes, 0); /* nothing reached the part */
+    {
+        uint8_t many[ADIS_MAX_PIPELINE];
+        uint16_t vals[ADIS_MAX_PIPELINE];
+        unsigned k;
+        for (k = 0; k < ADIS_MAX_PIPELINE; k++) {
+            many[k] = (uint8_t)(2u * k);
+        }
+        CHECK_OK(adis_read_regs(&dev, many, vals, ADIS_MAX_PIPELINE)); /* the largest read */
+        for (k = 0; k < ADIS_MAX_PIPELINE; k++) {
+            CHECK_EQ_HEX(vals[k], 0x1000u + k);
+        }
+    }
+}
+
+/* adis_read_reg has its own 2-frame path: the same reads and values as adis_read_regs with
+ * n = 1 (the frames themselves: the golden traces of tests/golden). */
+static void test_read_reg_as_regs(void)
+{
+    uint16_t v1 = 0, v2 = 0;
+    uint8_t a;
+    setup();
+    for (a = 0x00; a < 0x40; a = (uint8_t)(a + 0x0E)) {
+        const unsigned r0 = core.reads;
+        CHECK_OK(adis_read_reg(&dev, a, &v1));
+        CHECK_EQ_INT(core.reads - r0, 2u);
+        CHECK_OK(adis_read_regs(&dev, &a, &v2, 1u));
+        CHECK_EQ_INT(core.reads - r0, 4u);
+        CHECK_EQ_HEX(v1, v2);
+        CHECK_EQ_HEX(v1, 0x1000u + (a >> 1));
+    }
+    CHECK_EQ_INT(board.log.total, 0);
 }
 
 int main(void)
 {
+    UNIT_RUN(test_read_reg_as_regs);
     UNIT_RUN(test_read_write);
     UNIT_RUN(test_busy_and_broken_frames);
     UNIT_RUN(test_burst);

@@ -8,6 +8,7 @@
  */
 #include "inclino/adis_imu.h"
 #include "adis_imu_regs.h" /* white-box: the driver's register map */
+#include "inclino/fx.h"
 #include "unit.h"
 
 #include <string.h>
@@ -360,6 +361,57 @@ static void test_diag(void)
     CHECK_EQ_HEX(ADIS_IMU_DIAG_ERRORS | ADIS_IMU_DIAG_UNUSED, 0xFFFF);
 }
 
+/* Every range, family and LSB code: valid ones convert (and only those), the others fail with
+ * INC_ERR_INVAL and 0; the NULL check comes first. Against the rationals written out here,
+ * counts clamped to [-65536, 65535]. Codes up to 255: with the ARM EABI's short enums (the
+ * cross builds) a cast of 256 and above wraps to a valid code. */
+static void test_conversion_codes(void)
+{
+    static const int32_t counts[] = {0, 1, -1, 5, -8192, 8191, 65535, -65536, 70000, -70000};
+    int code;
+    size_t i;
+    for (code = -3; code <= 255; code++) {
+        const bool range_ok = code == 1 || code == 2 || code == 4;
+        const bool family_ok = code == 0 || code == 1;
+        for (i = 0; i < sizeof counts / sizeof counts[0]; i++) {
+            const int64_t c = counts[i] > 65535 ? 65535 : (counts[i] < -65536 ? -65536 : counts[i]);
+            int32_t v = 7;
+            CHECK_ERR(adis_imu_gyro_dps_from_counts(counts[i], (enum adis_imu_range)code, &v),
+                      range_ok ? INC_OK : INC_ERR_INVAL);
+            CHECK_EQ_INT(v, range_ok ? fx_div64(c * 32768, 40u / (uint32_t)code) : 0);
+            v = 7;
+            CHECK_ERR(adis_imu_temp_c_from_counts(counts[i], (enum adis_imu_family)code, &v),
+                      family_ok ? INC_OK : INC_ERR_INVAL);
+            CHECK_EQ_INT(v, family_ok ? fx_div64((25000 + c * (code == 0 ? 136 : 140)) * 8192, 125u)
+                                      : 0);
+        }
+        CHECK_ERR(adis_imu_gyro_dps_from_counts(0, (enum adis_imu_range)code, NULL), INC_ERR_NULL);
+        CHECK_ERR(adis_imu_temp_c_from_counts(0, (enum adis_imu_family)code, NULL), INC_ERR_NULL);
+    }
+    {
+        static const uint32_t lsbs[] = {0u, 1u, 333u, 3333u, 100000u, 100001u, UINT32_MAX};
+        size_t k;
+        for (k = 0; k < sizeof lsbs / sizeof lsbs[0]; k++) {
+            const bool ok = lsbs[k] >= 1u && lsbs[k] <= 100000u;
+            for (i = 0; i < sizeof counts / sizeof counts[0]; i++) {
+                const int64_t c = counts[i] > 65535 ? 65535
+                                                    : (counts[i] < -65536 ? -65536 : counts[i]);
+                int32_t v = 7;
+                CHECK_ERR(adis_imu_accel_g_from_counts(counts[i], lsbs[k], &v),
+                          ok ? INC_OK : INC_ERR_INVAL);
+                CHECK_EQ_INT(v, ok ? fx_div64(c * (int64_t)lsbs[k] * 1024, 15625u) : 0);
+            }
+            CHECK_ERR(adis_imu_accel_g_from_counts(0, lsbs[k], NULL), INC_ERR_NULL);
+        }
+    }
+    for (i = 0; i < sizeof counts / sizeof counts[0]; i++) {
+        const int64_t c = counts[i] > 65535 ? 65535 : (counts[i] < -65536 ? -65536 : counts[i]);
+        CHECK_EQ_INT(adis_imu_supply_v_from_counts(counts[i]), fx_div64(c * 2418 * 1024, 15625u));
+        CHECK_EQ_INT(adis_imu_magn_gauss_from_counts(counts[i]), fx_div64(c * 65536, 2000u));
+        CHECK_EQ_INT(adis_imu_aux_v_from_counts(counts[i]), fx_div64(c * 8058 * 4096, 625000u));
+    }
+}
+
 int main(void)
 {
     UNIT_RUN(test_gyro_exhaustive);
@@ -370,5 +422,6 @@ int main(void)
     UNIT_RUN(test_tables);
     UNIT_RUN(test_read_known_addresses);
     UNIT_RUN(test_diag);
+    UNIT_RUN(test_conversion_codes);
     return unit_report();
 }

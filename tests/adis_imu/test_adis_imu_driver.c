@@ -731,6 +731,25 @@ static void test_registers_and_arguments(void)
     CHECK_EQ_INT(fx_violations(), 0);
 }
 
+/* A reset restores MSC_CTRL from flash; the driver writes the data-ready bits back as configured
+ * when they differ (here: active low, not in flash), and leaves them when they agree. */
+static void test_reset_restores_dr(void)
+{
+    fx_setup(SIM_ADIS16405);
+    REQUIRE(fx_init() == INC_OK);
+    REQUIRE(adis_imu_dr_config(&fx.imu, true, ADIS_IMU_DR_DIO1, true) == INC_OK);
+    CHECK_EQ_HEX(sim_adis_imu_peek(&fx.part, ADIS_IMU_REG_MSC_CTRL) & 0x7u, ADIS_IMU_MSC_DR_EN);
+    CHECK_OK(adis_imu_command(&fx.imu, ADIS_IMU_CMD_SW_RESET));
+    CHECK_EQ_HEX(sim_adis_imu_peek(&fx.part, ADIS_IMU_REG_MSC_CTRL) & 0x7u, ADIS_IMU_MSC_DR_EN);
+    CHECK_EQ_HEX(fx.imu.msc_ctrl & 0x7u, ADIS_IMU_MSC_DR_EN);
+    REQUIRE(adis_imu_dr_config(&fx.imu, true, ADIS_IMU_DR_DIO1, false) == INC_OK);
+    CHECK_OK(adis_imu_command(&fx.imu, ADIS_IMU_CMD_SW_RESET));
+    CHECK_EQ_HEX(sim_adis_imu_peek(&fx.part, ADIS_IMU_REG_MSC_CTRL), ADIS_IMU_MSC_DEFAULT);
+    CHECK_EQ_HEX(fx.imu.msc_ctrl, ADIS_IMU_MSC_DEFAULT);
+    CHECK_OK(adis_imu_wait_ready(&fx.imu, 0, NULL));
+    CHECK_EQ_INT(fx_violations(), 0);
+}
+
 int main(void)
 {
     UNIT_RUN(test_init_each_variant);
@@ -752,5 +771,6 @@ int main(void)
     UNIT_RUN(test_data_ready);
     UNIT_RUN(test_self_test);
     UNIT_RUN(test_registers_and_arguments);
+    UNIT_RUN(test_reset_restores_dr);
     return unit_report();
 }

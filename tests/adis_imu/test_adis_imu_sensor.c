@@ -160,6 +160,80 @@ static void test_adis16364_identity_and_temps(void)
     CHECK_EQ_INT(fx_violations(), 0);
 }
 
+/* DIAG_STAT -> SENSOR_D_*, one bit at a time and all error bits at once. */
+static uint32_t expected_flags(uint16_t d)
+{
+    uint32_t f = 0u;
+    if ((d & (ADIS_IMU_DIAG_SUPPLY_LOW | ADIS_IMU_DIAG_SUPPLY_HIGH)) != 0u) f |= SENSOR_D_SUPPLY;
+    if ((d & ADIS_IMU_DIAG_SELF_TEST_BITS) != 0u) f |= SENSOR_D_SELF_TEST;
+    if ((d & ADIS_IMU_DIAG_OVERRANGE) != 0u) f |= SENSOR_D_OVERRANGE;
+    if ((d & ADIS_IMU_DIAG_SPI_FAIL) != 0u) f |= SENSOR_D_BUS;
+    if ((d & (ADIS_IMU_DIAG_FLASH_UPDATE | ADIS_IMU_DIAG_FLASH_CHECKSUM)) != 0u) {
+        f |= SENSOR_D_MEMORY;
+    }
+    if ((d & (ADIS_IMU_DIAG_ALARM1 | ADIS_IMU_DIAG_ALARM2)) != 0u) f |= SENSOR_D_ALARM;
+    return f;
+}
+
+static void test_diag_bits(void)
+{
+    struct sensor_diag d;
+    unsigned b;
+    fx_setup(SIM_ADIS16405);
+    REQUIRE(sensor_init(&sen, &fx.cfg) == INC_OK);
+    input(0.0, 0.0, 1.0);
+    CHECK_OK(sensor_read_diag(&sen, &d)); /* the power-up flags, once */
+    for (b = 0; b <= 16u; b++) {
+        const uint16_t bits = b == 16u ? (uint16_t)ADIS_IMU_DIAG_ERRORS : (uint16_t)(1u << b);
+        if (b == 7u) {
+            continue; /* never set by a live part (a bus fault) */
+        }
+        sim_adis_imu_raise_diag(&fx.part, bits);
+        CHECK_OK(sensor_read_diag(&sen, &d));
+        CHECK_EQ_HEX(d.raw, bits);
+        CHECK_EQ_HEX(d.flags, expected_flags(bits));
+    }
+    CHECK_EQ_INT(fx_violations(), 0);
+}
+
+/* The gyro full scale of every range; the temperature exactly that of the part's counts (the
+ * 1636x mean of three equal die temperatures, the 1640x TEMP_OUT). */
+static void test_info_ranges_and_temp(void)
+{
+    static const struct {
+        enum sim_adis_imu_variant v;
+        uint8_t temp_addr;
+        enum adis_imu_family f;
+    } parts[] = {
+        {SIM_ADIS16364, ADIS1636X_REG_XTEMP_OUT, ADIS_IMU_FAMILY_1636X},
+        {SIM_ADIS16405, ADIS1640X_REG_TEMP_OUT, ADIS_IMU_FAMILY_1640X},
+    };
+    size_t k;
+    for (k = 0; k < sizeof parts / sizeof parts[0]; k++) {
+        struct sensor_sample s;
+        struct sensor_info info;
+        int32_t want = 0;
+        fx_setup(parts[k].v);
+        REQUIRE(sensor_init(&sen, &fx.cfg) == INC_OK);
+        input(0.0, 0.0, 1.0);
+        REQUIRE(sensor_next(&sen, 0u, &s) == INC_OK);
+        REQUIRE(adis_imu_temp_c_from_counts(
+                    adis_sign_extend(sim_adis_imu_peek(&fx.part, parts[k].temp_addr), 12u),
+                    parts[k].f, &want) == INC_OK);
+        CHECK_EQ_INT(s.temp_c, want);
+        REQUIRE(adis_imu_set_filter(&fx.imu, 2u, ADIS_IMU_RANGE_150) == INC_OK);
+        CHECK_OK(sensor_get_info(&sen, &info));
+        CHECK_EQ_INT(info.gyro_fs_dps, FX_Q16_INT(150));
+        REQUIRE(adis_imu_set_filter(&fx.imu, 4u, ADIS_IMU_RANGE_75) == INC_OK);
+        CHECK_OK(sensor_get_info(&sen, &info));
+        CHECK_EQ_INT(info.gyro_fs_dps, FX_Q16_INT(75));
+        REQUIRE(adis_imu_set_filter(&fx.imu, 0u, ADIS_IMU_RANGE_300) == INC_OK);
+        CHECK_OK(sensor_get_info(&sen, &info));
+        CHECK_EQ_INT(info.gyro_fs_dps, FX_Q16_INT(300));
+        CHECK_EQ_INT(fx_violations(), 0);
+    }
+}
+
 int main(void)
 {
     UNIT_RUN(test_refused_before_init);
@@ -167,5 +241,7 @@ int main(void)
     UNIT_RUN(test_overrange);
     UNIT_RUN(test_missed_and_stale);
     UNIT_RUN(test_adis16364_identity_and_temps);
+    UNIT_RUN(test_diag_bits);
+    UNIT_RUN(test_info_ranges_and_temp);
     return unit_report();
 }

@@ -29,13 +29,16 @@
 extern "C" {
 #endif
 
-#define ADIS_FLAG_ND 0x8000u  /* new data since the register was last read */
-#define ADIS_FLAG_EA 0x4000u  /* error or alarm active */
-#define ADIS_WRITE 0x8000u    /* write bit of a command frame */
-#define ADIS_ADDR_MAX 0x7Fu   /* 7-bit addresses (the ADIS16255 uses 6 bits) */
-#define ADIS_MAX_PIPELINE 32u /* registers per adis_read_regs call */
+#define ADIS_FLAG_ND 0x8000u /* new data since the register was last read */
+#define ADIS_FLAG_EA 0x4000u /* error or alarm active */
+#define ADIS_WRITE 0x8000u   /* write bit of a command frame */
+#define ADIS_ADDR_MAX 0x7Fu  /* 7-bit addresses (the ADIS16255 uses 6 bits) */
+/* Registers per adis_read_regs call: the drivers read at most 14 at once (every channel of an
+ * ADIS1636x/1640x); the buffers of 17 frames sit on the stack of the small images' deepest path. */
+#define ADIS_MAX_PIPELINE 16u
 
-/* Read one 16-bit register (2 frames). */
+/* Read one 16-bit register (2 frames): the bus traffic, results and errors of
+ * adis_read_regs(dev, &addr, value, 1), with a 2-frame buffer (a small stack frame). */
 int adis_read_reg(struct spi_dev *dev, uint8_t addr, uint16_t *value);
 
 /*

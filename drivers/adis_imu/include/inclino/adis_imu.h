@@ -366,7 +366,6 @@ struct adis_imu_cfg {
 
 struct adis_imu {
     struct adis_imu_cfg cfg;
-    struct spi_dev spi;
     const struct adis_imu_variant_info *info; /* the identified part (NULL until init passed) */
     uint16_t found_id;                        /* PROD_ID read at init (also when it was wrong) */
     uint8_t found_variant; /* enum adis_imu_variant of found_id, or ADIS_IMU_UNKNOWN */
@@ -387,6 +386,8 @@ struct adis_imu {
     /* statistics */
     uint32_t bursts, reg_reads, bus_errors, device_errors, stale_reads, timeouts;
     uint32_t sensor_missed; /* sensor ops: samples lost since the last sample handed out */
+    /* Last: the driver's own fields above stay within the short load/store offsets of Thumb. */
+    struct spi_dev spi;
 };
 
 /*
