@@ -74,38 +74,30 @@ const struct calstore_config *epb_image_no_flash(void)
     return &fc;
 }
 
-/* Diagnostic requests (end of line). */
-enum epb_diag_cmd {
-    EPB_DIAG_NONE = 0,
-    EPB_DIAG_FACE = 1, /* average face `face` (enum cal_face) for `n` samples */
-    EPB_DIAG_SAVE = 2, /* six-position offset/gain from the six faces, store the record */
-};
-
-struct epb_diag {
-    uint32_t cmd; /* enum epb_diag_cmd; cleared when done */
-    uint32_t face;
-    uint32_t n;
-    int32_t status; /* result of the last request */
-};
-
 volatile struct epb_diag epb_diag;
-volatile struct app_result epb_output;
+/* The newest result, written in place by app_measure when a block completes (no copy of it: the
+ * small images' RAM); epb_output_count counts the complete results. Readers run in the main loop
+ * after a result (the board's per_result hook): app_measure writes it while a block completes,
+ * so a reader in another context (an interrupt) would need its own copy taken here. */
+struct app_result epb_output;
 volatile uint32_t epb_output_count;
 
 static struct spi_bitbang spi;
 static struct adis_imu imu;
-static struct sensor sensor = {&adis_imu_sensor_ops, &imu};
 static struct calstore store;
 static struct app app;
 /* The end-of-line faces stay static: they live from the first FACE request to the SAVE, across
- * the measurements in between. The record built from them (640 B) and the configuration (192 B)
- * live only inside one call each (eol_save, app_start) and sit on the stack there, off the
- * deepest path (an end-of-line face read down to a DIAG_STAT read; the stack report's
- * image_stack_<image> test guards the worst case against the reserved stack). */
+ * the measurements in between and across a sensor re-init. faces_done has bit f set while
+ * faces[f] holds a face measured since the last SAVE. The record the SAVE builds lives in the
+ * application's own record (app_eol_fit_save), not on a stack. */
 static struct app_face faces[CAL_FACES];
+static uint32_t faces_done;
 
-/* Not inlined (here and in app_start): the locals must not join the frame of the main loop,
- * which is on every path. */
+#define EPB_FACES_ALL ((1u << CAL_FACES) - 1u)
+
+/* Not inlined (the diagnostic steps, app_start, measure): their locals must not join the frame
+ * of the main loop, which is on every path, nor each other's (link-time optimisation inlines
+ * across modules; docs/build.md, "Stack analysis"). */
 #define EPB_NOINLINE __attribute__((noinline))
 
 int epb_image_adis_up(struct adis_imu *dev, const struct epb_image_board *b)
@@ -128,28 +120,39 @@ int epb_image_adis_up(struct adis_imu *dev, const struct epb_image_board *b)
     return err;
 }
 
-/* Offset and gain from the six faces into a default record, bound and stored. */
-static EPB_NOINLINE int eol_save(void)
+/* The end-of-line requests (epb_image.h, epb_diag). The application, not ready after a save,
+ * makes the main loop start it again on what the store now holds. */
+static EPB_NOINLINE int diag_face(uint32_t face, uint32_t n)
 {
-    struct calrec rec;
     int err;
-    calrec_set_default(&rec);
-    err = app_eol_six_position(faces, &rec);
+    faces_done &= ~(1u << face);
+    err = app_eol_face(&app, n, 3277, FX_Q16_INT(2), &faces[face]);
     if (err == INC_OK) {
-        err = app_eol_save(&app, &rec, &store, NULL);
+        faces_done |= 1u << face;
     }
     return err;
 }
 
+static EPB_NOINLINE int diag_save(void)
+{
+    int err = INC_ERR_STATE;
+    if (faces_done == EPB_FACES_ALL) {
+        err = app_eol_fit_save(&app, faces, &store, NULL);
+        faces_done = 0u;
+    }
+    return err;
+}
+
+/* Each request in a frame of its own (diag_face, diag_save): neither joins the other's path. */
 static void diag_serve(void)
 {
     const uint32_t cmd = epb_diag.cmd;
+    const uint32_t face = epb_diag.face;
     int err = INC_ERR_INVAL;
-    if (cmd == EPB_DIAG_FACE && epb_diag.face < CAL_FACES) {
-        /* A face must hold still: 50 mg / 2 deg/s span at most. */
-        err = app_eol_face(&app, epb_diag.n, 3277, FX_Q16_INT(2), &faces[epb_diag.face]);
+    if (cmd == EPB_DIAG_FACE && face < CAL_FACES) {
+        err = diag_face(face, epb_diag.n);
     } else if (cmd == EPB_DIAG_SAVE) {
-        err = eol_save();
+        err = diag_save();
     }
     epb_diag.status = err;
     epb_diag.cmd = EPB_DIAG_NONE;
@@ -180,17 +183,21 @@ void epb_image_run(const struct hal *hal)
 static EPB_NOINLINE int app_start(void)
 {
     struct app_cfg cfg;
+    const struct sensor sensor = {&adis_imu_sensor_ops, &imu}; /* app_init copies it too */
     (void)app_cfg_default(&cfg, adis_imu_sample_rate_msps(ADIS_IMU_SMPL_PRD_DEFAULT));
     return app_init(&app, &cfg, &sensor, &store);
+}
+
+/* One result: its own frame (below the main loop's, not inside it). */
+static EPB_NOINLINE int measure(struct app_result *r)
+{
+    return app_measure(&app, r);
 }
 
 void epb_image_run_on(const struct epb_image_board *board)
 {
     const struct hal *hal = board->hal;
-    /* Static, not on the stack: this frame is on every path, the deepest included. */
-    static struct app_result r;
     for (;;) {
-        unsigned i;
         if (epb_image_adis_up(&imu, board) != INC_OK ||
             calstore_init(&store, board->store != NULL ? board->store : epb_image_no_flash()) !=
                 INC_OK ||
@@ -198,20 +205,7 @@ void epb_image_run_on(const struct epb_image_board *board)
             hal_delay_ms(hal, EPB_RETRY_MS);
             continue;
         }
-        while (app_measure(&app, &r) == INC_OK) {
-            /* Field by field: the output is volatile (read by another layer). */
-            epb_output.valid = r.valid;
-            epb_output.flags = r.flags;
-            epb_output.slope.slope_deg = r.slope.slope_deg;
-            epb_output.slope.grade_pct = r.slope.grade_pct;
-            epb_output.slope.bound_deg = r.slope.bound_deg;
-            epb_output.slope.bound_pct = r.slope.bound_pct;
-            epb_output.slope.flags = r.slope.flags;
-            epb_output.slope.valid = r.slope.valid;
-            for (i = 0; i < 3u; i++) {
-                epb_output.accel_g[i] = r.accel_g[i];
-            }
-            epb_output.temp_c = r.temp_c;
+        while (measure(&epb_output) == INC_OK) {
             epb_output_count = epb_output_count + 1u;
             if (board->per_result != NULL) {
                 board->per_result();

@@ -7,6 +7,7 @@
 #define INCLINO_EPB_IMAGE_H
 
 #include "inclino/adis_imu.h"
+#include "inclino/app.h"
 #include "inclino/calstore.h"
 #include "inclino/hal.h"
 #include "inclino/spi.h"
@@ -33,6 +34,38 @@ int epb_image_adis_up(struct adis_imu *dev, const struct epb_image_board *b);
 /* The placeholder flash of the calibration store: two 1 KiB slots whose every access fails with
  * INC_ERR_IO (the application runs uncalibrated and flags it). */
 const struct calstore_config *epb_image_no_flash(void);
+
+/*
+ * The end-of-line requests the diagnostic layer makes (epb_diag), served by the main loop after
+ * the next result, one at a time: the requester writes face and n, then cmd; the loop writes
+ * status, then clears cmd.
+ *   EPB_DIAG_FACE  average face `face` (enum cal_face) for n samples held still (50 mg / 2 deg/s
+ *                  span at most): status app_eol_face's code (INC_ERR_INVAL also for a face out of
+ *                  range); a failed measurement forgets that face.
+ *   EPB_DIAG_SAVE  with all six faces measured since the last save: offset, gain and gyro offset
+ *                  from them, stored in the calibration store (app_eol_fit_save); the faces are
+ *                  then forgotten and the application starts again on what the store holds (the
+ *                  new record; after a failed save the one before). INC_ERR_STATE (faces kept) when
+ *                  a face is missing.
+ * Any other cmd: INC_ERR_INVAL. A sensor re-init keeps the faces.
+ */
+enum epb_diag_cmd {
+    EPB_DIAG_NONE = 0,
+    EPB_DIAG_FACE = 1,
+    EPB_DIAG_SAVE = 2,
+};
+
+struct epb_diag {
+    uint32_t cmd; /* enum epb_diag_cmd; cleared when done */
+    uint32_t face;
+    uint32_t n;
+    int32_t status; /* result of the last request */
+};
+
+extern volatile struct epb_diag epb_diag;
+/* The newest result (see epb_image.c) and the count of results so far. */
+extern struct app_result epb_output;
+extern volatile uint32_t epb_output_count;
 
 /* Run the EPB application on a board; never returns. */
 void epb_image_run_on(const struct epb_image_board *board);

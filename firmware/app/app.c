@@ -440,8 +440,18 @@ static void finish_block(struct app *a, struct app_result *res)
 
 /* ---- Per sample --------------------------------------------------------------------------------- */
 
-int app_step(struct app *a, const struct sensor_sample *s, int read_err, struct app_corrected *out,
-             bool *done, struct app_result *res)
+/* app_step is never inlined (into app_measure, under link-time optimisation): the sample read
+ * app_measure makes must run below app_measure's small frame, not below app_step's locals, which
+ * would put them on the deepest stack path of the small images (docs/build.md, "Stack
+ * analysis"). */
+#if defined(__GNUC__)
+#define APP_NOINLINE __attribute__((noinline))
+#else
+#define APP_NOINLINE
+#endif
+
+APP_NOINLINE int app_step(struct app *a, const struct sensor_sample *s, int read_err,
+                          struct app_corrected *out, bool *done, struct app_result *res)
 {
     struct app_corrected c;
     bool wdone = false;

@@ -12,23 +12,15 @@
 
 #include <stddef.h>
 
-int app_eol_face(struct app *a, uint32_t n, fx_q16_t max_span_g, fx_q16_t max_span_dps,
-                 struct app_face *out)
+/* app_eol_face's measurement in the block's memory (app.h); checked arguments. */
+static int eol_face(struct app *a, uint32_t n, fx_q16_t max_span_g, fx_q16_t max_span_dps,
+                    struct app_face *out)
 {
     struct fx_sum temp;
     uint32_t k, flags = SENSOR_S_HAVE_GYRO | SENSOR_S_HAVE_TEMP;
     fx_q16_t acc_mean[3], gyro_mean[3] = {0, 0, 0}, temp_mean = 0;
     unsigned i;
     int err;
-    if (a == NULL || out == NULL) {
-        return INC_ERR_NULL;
-    }
-    if (!a->ready) {
-        return INC_ERR_STATE;
-    }
-    if (n == 0u || n > FX_SUM_MAX_COUNT) {
-        return INC_ERR_INVAL;
-    }
     cal_avg_reset(&a->eol_a);
     cal_avg_reset(&a->eol_g);
     fx_sum_reset(&temp);
@@ -64,6 +56,24 @@ int app_eol_face(struct app *a, uint32_t n, fx_q16_t max_span_g, fx_q16_t max_sp
     out->n = n;
     out->flags = flags & (SENSOR_S_HAVE_GYRO | SENSOR_S_HAVE_TEMP);
     return INC_OK;
+}
+
+int app_eol_face(struct app *a, uint32_t n, fx_q16_t max_span_g, fx_q16_t max_span_dps,
+                 struct app_face *out)
+{
+    int err;
+    if (a == NULL || out == NULL) {
+        return INC_ERR_NULL;
+    }
+    if (!a->ready) {
+        return INC_ERR_STATE;
+    }
+    if (n == 0u || n > FX_SUM_MAX_COUNT) {
+        return INC_ERR_INVAL;
+    }
+    err = eol_face(a, n, max_span_g, max_span_dps, out);
+    app_restart(a); /* the block's sums are gone */
+    return err;
 }
 
 int app_eol_six_position(const struct app_face face[CAL_FACES], struct calrec *rec)
@@ -120,6 +130,27 @@ int app_eol_save(struct app *a, struct calrec *rec, struct calstore *store,
     }
     rec->binding = a->id;
     return calstore_save(store, rec, info);
+}
+
+int app_eol_fit_save(struct app *a, const struct app_face face[CAL_FACES], struct calstore *store,
+                     struct calstore_info *info)
+{
+    int err;
+    if (a == NULL || face == NULL || store == NULL) {
+        return INC_ERR_NULL;
+    }
+    if (!a->ready) {
+        return INC_ERR_STATE;
+    }
+    /* From here on a->rec is work space: the instance cannot measure with it any more. */
+    a->ready = false;
+    calrec_set_default(&a->rec);
+    err = app_eol_six_position(face, &a->rec);
+    if (err == INC_OK) {
+        a->rec.binding = a->id;
+        err = calstore_save(store, &a->rec, info);
+    }
+    return err;
 }
 
 int app_eol_verify(struct app *a, const struct app_face *f, int face, fx_q16_t tol_g,

@@ -285,6 +285,84 @@ static void test_sensor_errors(void)
     CHECK_EQ_INT(epb_rig_violations(&rig), 0);
 }
 
+/* app_eol_fit_save: the same record as app_eol_six_position + app_eol_save, built in the
+ * application's own record; the instance is then not ready until the next app_init, which
+ * loads the new record, or after a failed save the one before. app_eol_face drops the block. */
+static void test_fit_save(void)
+{
+    struct app_face faces[CAL_FACES], swapped[CAL_FACES];
+    struct calrec ref;
+    struct calstore_info info;
+    struct app_result r;
+    struct sim_calpart_params part;
+    bool done = false;
+    int f, k;
+    sim_calpart_ideal(&part);
+    part.acc_bias[0].y0 = 0.02; /* offsets and gains the fit must find */
+    part.acc_bias[2].y0 = -0.015;
+    part.acc_scale[1].y0 = 1.01;
+    REQUIRE(epb_rig_init(&rig, EPB_RIG_ADIS16405, &part, 7u) == INC_OK);
+    cfg_small();
+    REQUIRE(epb_rig_power_up(&rig, &cfg) == INC_OK);
+    CHECK_ERR(rig.app.cal_status, INC_ERR_NOT_CALIBRATED);
+    /* a block in progress, then a face: the block is dropped */
+    for (k = 0; k < 5; k++) {
+        struct sensor_sample smp;
+        REQUIRE(sensor_next(&rig.app.sensor, 0u, &smp) == INC_OK);
+        REQUIRE(app_step(&rig.app, &smp, 0, NULL, &done, &r) == INC_OK);
+    }
+    CHECK_EQ_INT(rig.app.n, 5);
+    for (f = 0; f < CAL_FACES; f++) {
+        epb_rig_station(&rig, f, 25.0);
+        epb_rig_wait(&rig, 0.05);
+        REQUIRE(app_eol_face(&rig.app, 32u, FX_Q16_INT(1) / 20, FX_Q16_INT(2), &faces[f]) ==
+                INC_OK);
+        CHECK_EQ_INT(rig.app.n, 0);
+    }
+    calrec_set_default(&ref);
+    REQUIRE(app_eol_six_position(faces, &ref) == INC_OK);
+    CHECK(ref.acc_offset[0] > FX_Q16_ONE / 100); /* the part's 20 mg */
+
+    CHECK_ERR(app_eol_fit_save(NULL, faces, &rig.store, NULL), INC_ERR_NULL);
+    CHECK_ERR(app_eol_fit_save(&rig.app, NULL, &rig.store, NULL), INC_ERR_NULL);
+    CHECK_ERR(app_eol_fit_save(&rig.app, faces, NULL, NULL), INC_ERR_NULL);
+    CHECK(rig.app.ready); /* refused before it touched the record */
+    REQUIRE(app_eol_fit_save(&rig.app, faces, &rig.store, &info) == INC_OK);
+    CHECK_EQ_INT(info.seq, 1);
+    CHECK(!rig.app.ready);
+    CHECK_ERR(app_measure(&rig.app, &r), INC_ERR_STATE);
+    CHECK_ERR(app_eol_fit_save(&rig.app, faces, &rig.store, NULL), INC_ERR_STATE);
+    CHECK_ERR(app_eol_face(&rig.app, 32u, FX_Q16_INT(1) / 20, FX_Q16_INT(2), &faces[0]),
+              INC_ERR_STATE);
+
+    /* Power cycle: the record of the fit, bound to this part. */
+    REQUIRE(epb_rig_power_up(&rig, &cfg) == INC_OK);
+    CHECK_OK(rig.app.cal_status);
+    CHECK(app_calibrated(&rig.app));
+    for (k = 0; k < 3; k++) {
+        CHECK_EQ_INT(rig.app.rec.acc_offset[k], ref.acc_offset[k]);
+        CHECK_EQ_INT(rig.app.rec.acc_gain[k], ref.acc_gain[k]);
+        CHECK_EQ_INT(rig.app.rec.gyro_offset[k], ref.gyro_offset[k]);
+    }
+    CHECK(calrec_binding_equal(&rig.app.rec.binding, &rig.app.id));
+
+    /* A failed fit (two faces swapped: cal_six_position refuses them): not ready, nothing
+     * stored; the next app_init runs on the record before. */
+    memcpy(swapped, faces, sizeof swapped);
+    swapped[0] = faces[1];
+    swapped[1] = faces[0];
+    CHECK(app_eol_fit_save(&rig.app, swapped, &rig.store, &info) != INC_OK);
+    CHECK(!rig.app.ready);
+    REQUIRE(epb_rig_power_up(&rig, &cfg) == INC_OK);
+    CHECK_OK(rig.app.cal_status);
+    CHECK_EQ_INT(rig.app.rec.acc_offset[0], ref.acc_offset[0]);
+    CHECK_EQ_INT(rig.app.rec.acc_gain[1], ref.acc_gain[1]);
+    park(10.0, false, -1.0);
+    REQUIRE(app_measure(&rig.app, &r) == INC_OK);
+    CHECK_EQ_HEX(r.flags & APP_F_NOT_CALIBRATED, 0);
+    CHECK_EQ_INT(epb_rig_violations(&rig), 0);
+}
+
 int main(void)
 {
     UNIT_RUN(test_adis16405_exact);
@@ -292,5 +370,6 @@ int main(void)
     UNIT_RUN(test_identity_and_bad_records);
     UNIT_RUN(test_moving_and_alarms);
     UNIT_RUN(test_sensor_errors);
+    UNIT_RUN(test_fit_save);
     return unit_report();
 }

@@ -224,12 +224,18 @@ struct app {
     int cal_status;        /* calstore_load status */
     bool temp_set;         /* the models were evaluated at least once */
     fx_q16_t temp_applied; /* temperature of that evaluation */
-    /* the block in progress */
-    struct fx_sum sum_a[3], sum_g[3], sum_t;
+    /* The block in progress and app_eol_face's sums share their memory (the small images' RAM):
+     * app_eol_face drops the block (app_restart), and a block never runs inside it. */
+    union {
+        struct {
+            struct fx_sum sum_a[3], sum_g[3], sum_t;
+        };
+        struct {
+            struct cal_avg eol_a, eol_g; /* here, not on the stack: the M0+ image's is small */
+        };
+    };
     uint32_t n, missed, errors, motion_start, flags;
-    uint64_t var_max;            /* largest window variance on the slope axes, Q16 g^2 */
-    struct cal_avg eol_a, eol_g; /* app_eol_face's sums (here, not on the stack: the M0+ image
-                                    has 1.5 KiB of stack) */
+    uint64_t var_max; /* largest window variance on the slope axes, Q16 g^2 */
     bool ready;
 };
 
@@ -329,7 +335,9 @@ struct app_face {
  * Average n (1..2^31) samples of a face held still. Every read must succeed; any axis whose
  * span (max - min) exceeds max_span_g (accelerometer) or max_span_dps (gyro) makes it
  * INC_ERR_MOTION (the part moved). INC_ERR_NULL, INC_ERR_STATE, INC_ERR_INVAL (n == 0), a read
- * error. *out written only on success.
+ * error. *out written only on success. Once it has started reading (every return but those
+ * three) it has dropped the block in progress and restarted the stillness windows as
+ * app_restart does: the sums it used are the block's.
  */
 int app_eol_face(struct app *a, uint32_t n, fx_q16_t max_span_g, fx_q16_t max_span_dps,
                  struct app_face *out);
@@ -350,6 +358,19 @@ int app_eol_six_position(const struct app_face face[CAL_FACES], struct calrec *r
  */
 int app_eol_save(struct app *a, struct calrec *rec, struct calstore *store,
                  struct calstore_info *info);
+
+/*
+ * The whole on-device save without a record of the caller's (a 640 B struct calrec that a small
+ * image's stack would have to hold): the safe default (calrec_set_default), the six faces' offset,
+ * gain and gyro offset (app_eol_six_position), bound and stored (app_eol_save), all built in a's
+ * own record in use. That record is then gone, so a is left NOT READY (every call returns
+ * INC_ERR_STATE) until the caller runs app_init again, which loads what the store holds: the new
+ * record after a successful save, the one before after a failed save (a power cycle gives the
+ * same). Returns app_eol_six_position's or calstore_save's code; INC_ERR_NULL (a, face or store;
+ * a stays ready); INC_ERR_STATE (a not ready). info may be NULL.
+ */
+int app_eol_fit_save(struct app *a, const struct app_face face[CAL_FACES], struct calstore *store,
+                     struct calstore_info *info);
 
 /*
  * End-of-line verification, after the record is saved and loaded again (a fresh app_init): the
