@@ -69,10 +69,11 @@ set(CMAKE_C_EXTENSIONS OFF)
 set(CMAKE_EXPORT_COMPILE_COMMANDS ON)
 
 # -Wall -Wextra -Werror on every build, host and cross.
-add_compile_options(-Wall -Wextra -Werror
+# INCLINO_WARNING_OPTIONS: the ones that also apply when code is generated at link time (LTO).
+set(INCLINO_WARNING_OPTIONS -Wall -Wextra -Werror -Wshadow -Wvla -Wformat=2 -Wundef)
+add_compile_options(${INCLINO_WARNING_OPTIONS}
   $<$<COMPILE_LANGUAGE:C>:-Wstrict-prototypes>
-  $<$<COMPILE_LANGUAGE:C>:-Wmissing-prototypes>
-  -Wshadow -Wvla -Wformat=2 -Wundef)
+  $<$<COMPILE_LANGUAGE:C>:-Wmissing-prototypes>)
 
 if(INCLINO_SANITIZE)
   add_compile_definitions(INCLINO_SANITIZE_BUILD=1) # tests/support/unit.h: UNIT_SANITIZED

@@ -38,6 +38,24 @@ find_package(Python3 3.7 COMPONENTS Interpreter REQUIRED)
 # next to every object of a freestanding module; cmake/scripts/stack_report.py reads them.
 list(APPEND INCLINO_FREESTANDING_OPTIONS -fstack-usage -fcallgraph-info=su)
 
+# Link-time optimisation of the board images (inclino_add_image ... LTO; boards/s32k1). The modules
+# stay compiled as they are (machine code, with their .su/.ci for the stack reports), and every
+# other link (QEMU tests, inclino_all, images without LTO) uses them. An LTO image links copies
+# instead: inclino_cross_finalize gives each freestanding module it needs a twin <module>_lto,
+# the same sources, include directories, definitions and options, compiled -flto. The run-time
+# ABI and C-library entry points gcc emits calls to after LTO (hal/rt mem.c, the M0+'s
+# __aeabi_*divmod of base/fx) must stay real symbols: their sources are listed in the global
+# property INCLINO_NO_LTO_SOURCES and the twins compile them -fno-lto.
+if(INCLINO_IS_ARM)
+  set(_inclino_lto_default ON)
+else()
+  set(_inclino_lto_default OFF)
+endif()
+option(INCLINO_IMAGE_LTO "Link the board images with link-time optimisation (Arm cross targets)"
+  ${_inclino_lto_default})
+set_property(GLOBAL PROPERTY INCLINO_NO_LTO_SOURCES "")
+set_property(GLOBAL PROPERTY INCLINO_LTO_IMAGES "")
+
 set(INCLINO_SCRIPTS_DIR ${INCLINO_ROOT}/cmake/scripts)
 set(INCLINO_RT_DIR ${INCLINO_ROOT}/hal/rt)
 set(INCLINO_BOARD_DIR ${INCLINO_ROOT}/boards/qemu)
@@ -108,7 +126,7 @@ function(inclino_link_qemu_board exe)
 endfunction()
 
 function(inclino_add_image)
-  cmake_parse_arguments(I "LINK_CHECK;NO_RT_STARTUP" "NAME;SECTIONS;INDIRECT"
+  cmake_parse_arguments(I "LINK_CHECK;NO_RT_STARTUP;LTO" "NAME;SECTIONS;INDIRECT"
     "SOURCES;LIBS;WHOLE_LIBS;MEMORY" ${ARGN})
   if(NOT I_NAME)
     message(FATAL_ERROR "inclino_add_image: NAME is required")
@@ -172,6 +190,21 @@ INCLUDE @SECTIONS@
   if(I_LINK_CHECK)
     target_link_options(${img} PRIVATE "LINKER:--no-gc-sections")
   endif()
+  set(lto_args "")
+  if(I_LTO AND INCLINO_IMAGE_LTO)
+    # One link-time unit (-flto-partition=one), compiled with the options of the freestanding
+    # code (warnings as errors included: LTO warns at link time too) and its stack analysis:
+    # -dumpdir puts that unit's .su/.ci (and nothing else) at <dir>/<img>.lto.ltrans0.ltrans.*,
+    # which the stack report reads (--lto).
+    # The image's own sources as link-time code too; its libraries become the modules' twins
+    # in inclino_cross_finalize.
+    # (fat: the size report reads their symbols)
+    target_compile_options(${img} PRIVATE -flto -ffat-lto-objects)
+    set_property(GLOBAL APPEND PROPERTY INCLINO_LTO_IMAGES ${img})
+    target_link_options(${img} PRIVATE -flto -flto-partition=one ${INCLINO_WARNING_OPTIONS}
+      ${INCLINO_FREESTANDING_OPTIONS} -dumpdir $<TARGET_FILE_DIR:${img}>/${img}.lto.)
+    set(lto_args --lto $<TARGET_FILE_DIR:${img}>/${img}.lto.ltrans0.ltrans)
+  endif()
   if(I_SECTIONS)
     set_property(TARGET ${img} APPEND PROPERTY LINK_DEPENDS ${ld} ${I_SECTIONS})
   else()
@@ -190,6 +223,7 @@ INCLUDE @SECTIONS@
     COMMAND ${Python3_EXECUTABLE} ${INCLINO_SCRIPTS_DIR}/stack_report.py
       --map ${dir}/${img}.map --elf $<TARGET_FILE:${img}> --nm ${INCLINO_NM}
       --target ${INCLINO_TARGET} --out ${dir}/${img}.stack.txt --print ${indirect_args}
+      ${lto_args}
     WORKING_DIRECTORY ${dir}
     VERBATIM)
   if(I_INDIRECT)
@@ -198,7 +232,7 @@ INCLUDE @SECTIONS@
       COMMAND ${Python3_EXECUTABLE} ${INCLINO_SCRIPTS_DIR}/stack_report.py
         --map ${dir}/${img}.map --elf $<TARGET_FILE:${img}> --nm ${INCLINO_NM}
         --target ${INCLINO_TARGET} --out ${CMAKE_CURRENT_BINARY_DIR}/${img}.stack-check.txt
-        --indirect ${I_INDIRECT} --limit ${STACK_SIZE})
+        --indirect ${I_INDIRECT} --limit ${STACK_SIZE} ${lto_args})
     set_tests_properties(image_stack_${img} PROPERTIES LABELS "${INCLINO_TARGET};build"
       TIMEOUT 60)
   endif()
@@ -210,7 +244,100 @@ INCLUDE @SECTIONS@
   set_tests_properties(image_${img} PROPERTIES LABELS "${INCLINO_TARGET};build" TIMEOUT 60)
 endfunction()
 
+# The link closure of target t (LINK_LIBRARIES / INTERFACE_LINK_LIBRARIES, depth first), targets
+# only, each once: into the variable named by out.
+function(_inclino_link_closure t out)
+  set(seen ${${out}})
+  set(stack ${t})
+  while(stack)
+    list(POP_FRONT stack cur)
+    foreach(prop LINK_LIBRARIES INTERFACE_LINK_LIBRARIES)
+      get_target_property(libs ${cur} ${prop})
+      if(NOT libs)
+        continue()
+      endif()
+      foreach(l IN LISTS libs)
+        if(TARGET ${l} AND NOT l IN_LIST seen)
+          list(APPEND seen ${l})
+          list(APPEND stack ${l})
+        endif()
+      endforeach()
+    endforeach()
+  endwhile()
+  set(${out} ${seen} PARENT_SCOPE)
+endfunction()
+
+# The -flto twin of freestanding module m (see INCLINO_IMAGE_LTO above), made once. Include
+# directories are those of every module in `incs` (the image's closure): the twins link nothing
+# themselves, the image links all of them in one group.
+function(_inclino_lto_twin m incs)
+  if(TARGET ${m}_lto)
+    return()
+  endif()
+  get_target_property(src_dir ${m} SOURCE_DIR)
+  get_target_property(srcs ${m} SOURCES)
+  set(abs "")
+  foreach(f IN LISTS srcs)
+    if(IS_ABSOLUTE ${f})
+      list(APPEND abs ${f})
+    else()
+      list(APPEND abs ${src_dir}/${f})
+    endif()
+  endforeach()
+  add_library(${m}_lto STATIC EXCLUDE_FROM_ALL ${abs})
+  target_include_directories(${m}_lto PRIVATE $<TARGET_PROPERTY:${m},INCLUDE_DIRECTORIES>)
+  foreach(i IN LISTS incs)
+    target_include_directories(${m}_lto PRIVATE $<TARGET_PROPERTY:${i},INTERFACE_INCLUDE_DIRECTORIES>)
+  endforeach()
+  target_compile_definitions(${m}_lto PRIVATE $<TARGET_PROPERTY:${m},COMPILE_DEFINITIONS>)
+  target_compile_options(${m}_lto PRIVATE $<TARGET_PROPERTY:${m},COMPILE_OPTIONS> -flto)
+endfunction()
+
+function(_inclino_lto_finalize)
+  get_property(images GLOBAL PROPERTY INCLINO_LTO_IMAGES)
+  get_property(modules GLOBAL PROPERTY INCLINO_FREESTANDING_MODULES)
+  get_property(no_lto GLOBAL PROPERTY INCLINO_NO_LTO_SOURCES)
+  if(no_lto)
+    set_source_files_properties(${no_lto} PROPERTIES COMPILE_OPTIONS -fno-lto)
+  endif()
+  foreach(img IN LISTS images)
+    set(closure "")
+    _inclino_link_closure(${img} closure)
+    get_target_property(direct ${img} LINK_LIBRARIES)
+    set(twins "")
+    set(others "")
+    foreach(l IN LISTS closure)
+      get_target_property(type ${l} TYPE)
+      if(l IN_LIST modules)
+        _inclino_lto_twin(${l} "${closure}")
+        list(APPEND twins ${l}_lto)
+      elseif(NOT type STREQUAL "INTERFACE_LIBRARY")
+        message(FATAL_ERROR "LTO image ${img}: ${l} is no freestanding module (no twin)")
+      endif()
+    endforeach()
+    foreach(l IN LISTS direct)
+      if(NOT TARGET ${l})
+        list(APPEND others ${l}) # options and plain libraries (-lgcc, archives by path)
+      endif()
+    endforeach()
+    foreach(i IN LISTS closure)
+      target_include_directories(${img} PRIVATE
+        $<TARGET_PROPERTY:${i},INTERFACE_INCLUDE_DIRECTORIES>)
+    endforeach()
+    set_property(TARGET ${img} PROPERTY LINK_LIBRARIES
+      -Wl,--start-group ${twins} -Wl,--end-group ${others})
+    # the modules themselves too: the size report reads their symbols (the twins hold IR only)
+    foreach(l IN LISTS twins)
+      string(REGEX REPLACE "_lto$" "" orig ${l})
+      add_dependencies(${img} ${orig})
+    endforeach()
+  endforeach()
+endfunction()
+
 function(inclino_cross_finalize)
+  if(INCLINO_IMAGE_LTO)
+    _inclino_lto_finalize()
+  endif()
   get_property(modules GLOBAL PROPERTY INCLINO_FREESTANDING_MODULES)
   inclino_add_image(NAME inclino_all LINK_CHECK
     SOURCES ${INCLINO_RT_DIR}/link_check_main.c

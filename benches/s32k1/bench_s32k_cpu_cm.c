@@ -214,7 +214,9 @@ static int run(const char *name, bool lpspi, bool sleep, enum wrap wrap)
         printf("CPU engine=%s error=%d\n", name, err);
         return err;
     }
-    rig.s32k.lp.cfg.irq_wait = sleep;
+    if (lpspi) {
+        rig.s32k.lp.cfg.irq_wait = sleep; /* the engines share memory: only the one running */
+    }
     epb_rig_vehicle_default(&v);
     v.bump_rate_hz = 0.0;
     epb_rig_park(&rig, &v);
@@ -226,8 +228,11 @@ static int run(const char *name, bool lpspi, bool sleep, enum wrap wrap)
         bus_orig = rig.s32k.spi->ops;
         bus_wrap = *bus_orig;
         bus_wrap.transfer = w_transfer;
-        rig.s32k.lp.bus.ops = &bus_wrap;
-        rig.s32k.bb.bus.ops = &bus_wrap;
+        if (lpspi) {
+            rig.s32k.lp.bus.ops = &bus_wrap;
+        } else {
+            rig.s32k.bb.bus.ops = &bus_wrap;
+        }
     } else if (wrap == WRAP_SENSOR) {
         sens_orig = rig.sensor.ops;
         sens_wrap = *sens_orig;
@@ -251,7 +256,7 @@ static int run(const char *name, bool lpspi, bool sleep, enum wrap wrap)
         if (n == WARMUP) {
             read_t = app_t = 0.0;
             pairs0 = pairs;
-            sleeps0 = rig.s32k.lp.stats.sleeps;
+            sleeps0 = lpspi ? rig.s32k.lp.stats.sleeps : 0u;
             xfer_t = now_t = wait_t = rd_t = 0u;
             wait_p = rd_p = 0u;
             xfer_p = now_p = 0u;
@@ -276,8 +281,8 @@ static int run(const char *name, bool lpspi, bool sleep, enum wrap wrap)
         printf("CPU engine=%s samples=%u read_instr=%.0f app_instr=%.0f pairs=%.1f sleeps=%.2f "
                "pair_instr=%.1f access_instr=%.1f read_direct_instr=%.0f\n",
                name, (unsigned)SAMPLES, instr(read_t / SAMPLES - p * ovh), instr(app_t / SAMPLES),
-               p, (double)(rig.s32k.lp.stats.sleeps - sleeps0) / SAMPLES, instr(ovh), instr(acc),
-               instr(read_t / SAMPLES) - p * (instr(acc) - 2.0));
+               p, (double)((lpspi ? rig.s32k.lp.stats.sleeps : 0u) - sleeps0) / SAMPLES, instr(ovh),
+               instr(acc), instr(read_t / SAMPLES) - p * (instr(acc) - 2.0));
         if (wrap == WRAP_XFER) {
             printf("CPU engine=%s transfers=%.2f transfer_instr=%.0f transfer_direct_instr=%.0f\n",
                    name, (double)xfer_n / SAMPLES, instr(((double)xfer_t - xfer_p * ovh) / SAMPLES),

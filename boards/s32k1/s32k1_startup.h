@@ -23,6 +23,21 @@ struct s32k1_vector_table {
     s32k1_handler handler[15 + S32K1_IRQS];
 };
 
+/*
+ * Start-up code: s32k1-sections.ld places the sections .text.s32k_early.* between the vector
+ * table and the flash configuration field at 0x400. By section name, not by object file, so the
+ * placement holds with link-time optimisation too (one link-time object, no startup_s32k1.c.obj);
+ * one section per function, so --gc-sections still drops what an image does not reach.
+ */
+#define S32K1_EARLY(name) __attribute__((section(".text.s32k_early." #name)))
+
+/*
+ * Kept out of its caller: with LTO gcc would inline the whole bring-up and the main loop into
+ * Reset_Handler, whose one frame then holds the locals of every step at once (the stack report's
+ * worst case grows). Each step keeps its own frame, live only while it runs.
+ */
+#define S32K1_STEP __attribute__((noinline))
+
 void Reset_Handler(void);
 void Default_Handler(void);
 int main(void);

@@ -6,6 +6,12 @@
 #include "inclino/s32k_gpio.h"
 #include "inclino/s32k_mmio.h"
 
+/* Out of line also under link-time optimisation (the board images, boards/s32k1/CMakeLists.txt):
+ * the bring-up steps keep their own frames instead of adding theirs to the caller's, and the
+ * vectors' handlers (placed before the flash configuration field, s32k1-sections.ld, where space
+ * is short) stay one call each instead of a copy of the port's interrupt code per vector. */
+#define S32K_BOARD_OUT_OF_LINE __attribute__((noinline))
+
 static int pins_up(const struct s32k_board_pins *p)
 {
     int err = s32k_gpio_clock_on();
@@ -93,15 +99,16 @@ static int lpspi_up(struct s32k_board *b)
     return err;
 }
 
-void s32k_board_lpspi_isr(struct s32k_board *b)
+S32K_BOARD_OUT_OF_LINE void s32k_board_lpspi_isr(struct s32k_board *b)
 {
-    if (b != NULL) {
+    if (b != NULL && b->spi == &b->lp.bus) { /* the engines share memory (s32k_board.h) */
         spi_lpspi_isr(&b->lp);
         s32k_hal_wake(&b->port);
     }
 }
 
-int s32k_board_init_core(struct s32k_board *b, const struct s32k_board_desc *desc, bool watchdog)
+S32K_BOARD_OUT_OF_LINE int s32k_board_init_core(struct s32k_board *b,
+                                                const struct s32k_board_desc *desc, bool watchdog)
 {
     struct s32k_hal_config hc;
     int err;
@@ -123,7 +130,7 @@ int s32k_board_init_core(struct s32k_board *b, const struct s32k_board_desc *des
     return s32k_hal_init(&b->port, &hc, &b->hal);
 }
 
-int s32k_board_spi_bitbang(struct s32k_board *b)
+S32K_BOARD_OUT_OF_LINE int s32k_board_spi_bitbang(struct s32k_board *b)
 {
     struct spi_bitbang_cfg sc;
     int err;
@@ -231,14 +238,14 @@ uint16_t s32k_board_bb_frame(void *ctx, const struct spi_bitbang_frame *fr, bool
     return (uint16_t)in;
 }
 
-void s32k_board_port_isr(struct s32k_board *b, uint32_t port)
+S32K_BOARD_OUT_OF_LINE void s32k_board_port_isr(struct s32k_board *b, uint32_t port)
 {
     if (b != NULL) {
         s32k_hal_port_isr(&b->port, port);
     }
 }
 
-void s32k_board_lpit_isr(struct s32k_board *b)
+S32K_BOARD_OUT_OF_LINE void s32k_board_lpit_isr(struct s32k_board *b)
 {
     if (b != NULL) {
         s32k_hal_lpit_isr(&b->port);

@@ -13,7 +13,8 @@ struct s32k_board s32k_image_board;
 static struct s32k_ftfc ftfc;
 static struct calstore_config store_cfg;
 
-const struct calstore_config *s32k_image_store(const struct s32k_board_desc *desc)
+S32K1_EARLY(s32k_image_store)
+S32K1_STEP const struct calstore_config *s32k_image_store(const struct s32k_board_desc *desc)
 {
     struct s32k_ftfc_cfg fc;
     fc.part = desc->part == S32K_PART_116 ? S32K_FTFC_S32K116 : S32K_FTFC_S32K144;
@@ -28,7 +29,8 @@ const struct calstore_config *s32k_image_store(const struct s32k_board_desc *des
     return &store_cfg;
 }
 
-void s32k_image_bringup(const struct s32k_board_desc *desc)
+S32K1_EARLY(s32k_image_bringup)
+S32K1_STEP void s32k_image_bringup(const struct s32k_board_desc *desc)
 {
     struct s32k_board *b = &s32k_image_board;
     if (desc == NULL || s32k_board_init_core(b, desc, true) != INC_OK ||
@@ -39,7 +41,7 @@ void s32k_image_bringup(const struct s32k_board_desc *desc)
     }
 }
 
-void s32k_epb_main(const struct s32k_board_desc *desc)
+S32K1_STEP void s32k_epb_main(const struct s32k_board_desc *desc)
 {
     const struct s32k_board *b = &s32k_image_board;
     struct epb_image_board eb;

@@ -10,6 +10,7 @@
 
 #include "inclino/calstore.h"
 #include "inclino/s32k_board.h"
+#include "s32k1_startup.h"
 
 /* The board the image runs on (its ISRs take it). */
 extern struct s32k_board s32k_image_board;

@@ -39,7 +39,7 @@ __attribute__((used, section(".flash_config"))) const uint8_t s32k1_flash_config
                                                                                    FEPROT FDPROT */
 };
 
-void Reset_Handler(void)
+S32K1_EARLY(Reset_Handler) void Reset_Handler(void)
 {
     const uint32_t *src = __data_load__;
     uint32_t *dst;

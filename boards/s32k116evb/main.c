@@ -11,7 +11,7 @@ void PORT_IRQHandler(void);
 void LPIT0_IRQHandler(void);
 void LPSPI0_IRQHandler(void);
 
-void PORT_IRQHandler(void)
+S32K1_EARLY(PORT_IRQHandler) void PORT_IRQHandler(void)
 {
     uint32_t port;
     for (port = 0; port < S32K_PORT_COUNT; port++) {
@@ -19,17 +19,17 @@ void PORT_IRQHandler(void)
     }
 }
 
-void LPIT0_IRQHandler(void)
+S32K1_EARLY(LPIT0_IRQHandler) void LPIT0_IRQHandler(void)
 {
     s32k_board_lpit_isr(&s32k_image_board);
 }
 
-void LPSPI0_IRQHandler(void)
+S32K1_EARLY(LPSPI0_IRQHandler) void LPSPI0_IRQHandler(void)
 {
     s32k_board_lpspi_isr(&s32k_image_board);
 }
 
-int main(void)
+S32K1_EARLY(main) S32K1_STEP int main(void)
 {
     s32k_epb_main(&s32k_board_s32k116evb);
     return 0;

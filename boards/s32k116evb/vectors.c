@@ -11,7 +11,7 @@
 #include "s32k1_startup.h"
 
 /* An exception without a handler: park; the watchdog resets the part within its timeout. */
-void Default_Handler(void)
+S32K1_EARLY(Default_Handler) void Default_Handler(void)
 {
     for (;;) {
     }

@@ -47,7 +47,9 @@ static struct s32k_flexcan can;
 static struct can_tx tx;
 static struct can_speed_rx srx;
 
-static int up(void)
+/* The steps not inlined into main (link-time optimisation: main would then hold every step's
+ * locals at once, and Reset_Handler's start-up area before the FCF would take main). */
+static S32K1_STEP int up(void)
 {
     const struct s32k_board *b = &s32k_image_board;
     struct epb_image_board eb;
@@ -113,7 +115,7 @@ static void speed_cycle(struct app_vehicle *veh)
 }
 
 /* Run until an error the loop cannot go on from; returns it. */
-static int run(void)
+static S32K1_STEP int run(void)
 {
     struct app_vehicle veh = {false, 0, 0};
     uint32_t n = 0u;
@@ -150,7 +152,7 @@ static int run(void)
     }
 }
 
-int main(void)
+S32K1_STEP int main(void)
 {
     s32k_image_bringup(&s32k_board_s32k144evb);
     for (;;) {

@@ -14,37 +14,37 @@ void PORTE_IRQHandler(void);
 void LPIT0_Ch1_IRQHandler(void);
 void LPSPI0_IRQHandler(void);
 
-void PORTA_IRQHandler(void)
+S32K1_EARLY(PORTA_IRQHandler) void PORTA_IRQHandler(void)
 {
     s32k_board_port_isr(&s32k_image_board, 0u);
 }
 
-void PORTB_IRQHandler(void)
+S32K1_EARLY(PORTB_IRQHandler) void PORTB_IRQHandler(void)
 {
     s32k_board_port_isr(&s32k_image_board, 1u);
 }
 
-void PORTC_IRQHandler(void)
+S32K1_EARLY(PORTC_IRQHandler) void PORTC_IRQHandler(void)
 {
     s32k_board_port_isr(&s32k_image_board, 2u);
 }
 
-void PORTD_IRQHandler(void)
+S32K1_EARLY(PORTD_IRQHandler) void PORTD_IRQHandler(void)
 {
     s32k_board_port_isr(&s32k_image_board, 3u);
 }
 
-void PORTE_IRQHandler(void)
+S32K1_EARLY(PORTE_IRQHandler) void PORTE_IRQHandler(void)
 {
     s32k_board_port_isr(&s32k_image_board, 4u);
 }
 
-void LPIT0_Ch1_IRQHandler(void)
+S32K1_EARLY(LPIT0_Ch1_IRQHandler) void LPIT0_Ch1_IRQHandler(void)
 {
     s32k_board_lpit_isr(&s32k_image_board);
 }
 
-void LPSPI0_IRQHandler(void)
+S32K1_EARLY(LPSPI0_IRQHandler) void LPSPI0_IRQHandler(void)
 {
     s32k_board_lpspi_isr(&s32k_image_board);
 }

@@ -5,7 +5,7 @@
  */
 #include "s32k_image.h"
 
-int main(void)
+S32K1_EARLY(main) S32K1_STEP int main(void)
 {
     s32k_epb_main(&s32k_board_s32k144evb);
     return 0;

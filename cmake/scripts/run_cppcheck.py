@@ -3,9 +3,9 @@
 
 Checks base/ hal/ drivers/ firmware/ boards/ sim/ tools/ benches/ tests/ with
   --enable=warning,style,performance,portability --error-exitcode=1
-and explicit include directories: every include/ directory of a module, tests/support and
-boards/qemu (found at run time, so a new module needs no edit here). Explicit
-directories rather than the host's compile database, because the database holds only what the
+and explicit include directories: every include/ directory of a module, tests/support,
+boards/qemu and the board headers of boards/s32k1 and boards/generic (found at run time, so a
+new module needs no edit here). Explicit directories rather than the host's compile database, because the database holds only what the
 host builds: the Cortex-M port, the cross run-time and the QEMU boards would go unchecked.
 
 Suppressions live in cmake/scripts/cppcheck-suppressions.txt, each with a comment saying why.
@@ -32,7 +32,9 @@ def main():
             if os.path.basename(dirpath) == "include" and "rv32" not in dirpath.split(os.sep):
                 includes.append(dirpath)
     includes += [os.path.join(args.root, "tests", "support"),
-                 os.path.join(args.root, "boards", "qemu")]
+                 os.path.join(args.root, "boards", "qemu"),
+                 os.path.join(args.root, "boards", "s32k1"),
+                 os.path.join(args.root, "boards", "generic")]
     sources = [os.path.join(args.root, d) for d in DIRS if os.path.isdir(os.path.join(args.root, d))]
     suppressions = os.path.join(os.path.dirname(os.path.abspath(__file__)),
                                 "cppcheck-suppressions.txt")

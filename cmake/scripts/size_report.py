@@ -9,6 +9,15 @@ charged to the module it came from:
   libgcc, libc, ... other archives by name; <target> for the executable's own objects
   stack         the stack reserved by the linker script (.stack)
   (fill/align)  padding the linker inserted between input sections
+In an image linked with link-time optimisation (-flto) the code and data come from the
+link-time objects (*.ltrans*.o), not from a module's object: each such input section
+(-ffunction-sections -fdata-sections: one per function or object, named after it) is charged to
+the module whose archive (or the executable's own object) defines a symbol of that name, gcc's
+suffixes (.constprop.0, .isra.0, .part.0, .lto_priv.0) stripped. The symbol tables are read
+with readelf from the LOAD lines' inputs: for a module's link-time twin (<m>_lto, IR only) the
+module's own archive, for the executable's own objects their machine code (-ffat-lto-objects).
+What matches no module or several (merged constants, a static name two modules define) is its
+own line, "(lto: unattributed)".
 An output section counts as text when allocated and read-only, data when allocated, writable
 and loaded, bss when allocated and not loaded (NOBITS): the rules of berkeley `size`. The totals
 are cross-checked against `<prefix>size`; a mismatch fails the script (and the build).
@@ -17,6 +26,7 @@ Usage: size_report.py --map X.map --elf X.elf --size SIZE --readelf READELF --ta
                       --out X.size.txt [--print]
 """
 import argparse
+import glob
 import os
 import re
 import subprocess
@@ -61,7 +71,7 @@ def module_of(path, target):
         archive = os.path.basename(m.group(1))
         name = re.sub(r"^lib", "", re.sub(r"\.a$", "", archive))
         if name.startswith("inclino_"):
-            return name
+            return re.sub(r"_lto$", "", name)  # a module's link-time twin counts as the module
         if name in ("gcc", "c", "c_nano", "m", "g_nano", "nosys", "rdimon", "rdimon_nano"):
             return {"c_nano": "libc", "g_nano": "libc", "rdimon_nano": "librdimon",
                     "rdimon": "librdimon"}.get(name, "lib" + name)
@@ -76,6 +86,65 @@ def module_of(path, target):
     if m:
         return m.group(1)
     return "(linker)"
+
+
+LTO_UNATTRIBUTED = "(lto: unattributed)"
+
+
+def is_lto_unit(path):
+    return re.search(r"\.ltrans[0-9]*\.ltrans\.o$|\.ltrans[0-9]+\.o$", path) is not None
+
+
+def original_archive(twin):
+    """The module archive lib<m>.a of the build tree whose twin is lib<m>_lto.a (None if none)."""
+    want = os.path.basename(twin)[:-len("_lto.a")] + ".a"
+    root = os.path.dirname(twin)
+    while root != os.path.dirname(root) and not os.path.exists(os.path.join(root,
+                                                                            "CMakeCache.txt")):
+        root = os.path.dirname(root)
+    hits = glob.glob(os.path.join(root, "**", want), recursive=True)
+    return hits[0] if len(hits) == 1 else None
+
+
+def defining_modules(readelf, map_path, target):
+    """{symbol: set of modules} of the module archives and objects in the map's LOAD lines."""
+    base = os.path.dirname(os.path.abspath(map_path))
+    table = {}
+    with open(map_path, encoding="utf-8", errors="replace") as f:
+        loads = [m.group(1) for m in re.finditer(r"^LOAD (.+)$", f.read(), re.M)]
+    for path in loads:
+        if path == "linker stubs" or is_lto_unit(path):
+            continue
+        full = path if os.path.isabs(path) else os.path.normpath(os.path.join(base, path))
+        if not os.path.exists(full):
+            continue
+        if full.endswith("_lto.a"):
+            # a module's link-time twin (cmake/inclino_cross.cmake) holds IR only: the symbols
+            # are read from the module's own archive, the same sources compiled to machine code
+            full = original_archive(full)
+            if full is None:
+                continue
+        mod = module_of(full + "(x)" if full.endswith(".a") else full, target)
+        if not (mod.startswith("inclino_") or mod == "startup" or mod == target):
+            continue
+        # readelf, not nm: nm reads an LTO object's IR symbol table through the LTO plugin,
+        # which lists no static function or object; the fat object's ELF table has them all.
+        out = subprocess.run([readelf, "-sW", full], capture_output=True, text=True).stdout
+        for line in out.splitlines():
+            parts = line.split()
+            if (len(parts) == 8 and parts[3] in ("FUNC", "OBJECT") and parts[6] != "UND"):
+                table.setdefault(parts[7].split(".", 1)[0], set()).add(mod)
+    return table
+
+
+def lto_module(section, table):
+    """The module of an input section of a link-time object, from the symbol in its name."""
+    parts = section.split(".")[2:] if section.count(".") >= 2 else []
+    for part in parts:
+        mods = table.get(part)
+        if mods:
+            return next(iter(mods)) if len(mods) == 1 else LTO_UNATTRIBUTED
+    return LTO_UNATTRIBUTED
 
 
 def parse_map(path):
@@ -118,7 +187,7 @@ def parse_map(path):
             pending, pending_in = pending_in, None
             if m and m.group(3) and current is not None:
                 outputs[current]["inputs"].append((m.group(3).strip(), int(m.group(1), 16),
-                                                   int(m.group(2), 16)))
+                                                   int(m.group(2), 16), pending))
                 continue
         if line[0] != " ":
             # Column 0: an output section (".text  0xaddr  0xsize"), possibly wrapped.
@@ -142,7 +211,7 @@ def parse_map(path):
         m = re.match(r"^ ((?:\.|COMMON)\S*)\s+0x([0-9a-f]+)\s+0x([0-9a-f]+)\s+(.*)$", line)
         if m:
             outputs[current]["inputs"].append((m.group(4).strip(), int(m.group(2), 16),
-                                               int(m.group(3), 16)))
+                                               int(m.group(3), 16), m.group(1)))
             continue
         m = re.match(r"^ ((?:\.|COMMON)\S*)\s*$", line)
         if m:
@@ -170,6 +239,10 @@ def main():
     sections = elf_sections(args.readelf, args.elf)
     regions, outputs = parse_map(args.map)
 
+    lto_table = None
+    if any(is_lto_unit(e[0]) for o in outputs.values() for e in o["inputs"]):
+        lto_table = defining_modules(args.readelf, args.map, name)
+
     rows = {}  # module -> [text, data, bss]
     totals = [0, 0, 0]
     for sec, info in outputs.items():
@@ -193,11 +266,15 @@ def main():
         accounted = 0
         start, end = info["addr"], info["addr"] + info["size"]
         covered = start
-        for path, addr, size in sorted(info["inputs"], key=lambda e: (e[1], -e[2])):
+        for path, addr, size, insec in sorted(info["inputs"], key=lambda e: (e[1], -e[2])):
             lo = max(addr, covered)
             hi = min(addr + size, end)
             if hi > lo:
-                rows.setdefault(module_of(path, name), [0, 0, 0])[col] += hi - lo
+                if lto_table is not None and is_lto_unit(path):
+                    mod = lto_module(insec, lto_table)
+                else:
+                    mod = module_of(path, name)
+                rows.setdefault(mod, [0, 0, 0])[col] += hi - lo
                 accounted += hi - lo
                 covered = hi
         rest = info["size"] - accounted

@@ -21,8 +21,15 @@ With --indirect FILE (a board's list of what its calls through function pointers
 edges added, and names every function of the image that calls through a pointer and is not in
 the list (its pointer calls then still count as 0).
 
+With --lto PREFIX (an image linked with link-time optimisation, -flto-partition=one): the code
+is the link-time unit's, so its PREFIX.su/.ci (written at link time, cmake/inclino_cross.cmake)
+replace the objects' files, and only the objects linked as machine code (compiled -fno-lto:
+mem.c, ...) are read besides. gcc's clone and local suffixes (.constprop.0, .isra.0, .part.0,
+.lto_priv.0) are kept in the names shown; the ELF and --indirect are matched on the name
+without them (a C name has no dot), every clone of a listed callee counting.
+
 Usage: stack_report.py --map X.map --elf X.elf --nm NM --target T --out X.stack.txt [--print]
-       [--indirect FILE]
+       [--indirect FILE] [--lto PREFIX]
 """
 import argparse
 import glob
@@ -32,6 +39,11 @@ import subprocess
 import sys
 
 INDIRECT = "__indirect_call"
+
+
+def base_name(name):
+    """A function's C name without gcc's suffixes (foo.constprop.0, foo.lto_priv.1 -> foo)."""
+    return name.split(".", 1)[0]
 
 
 def load_objects(map_path):
@@ -54,6 +66,25 @@ def load_objects(map_path):
             else:
                 prefixes.append(os.path.splitext(path)[0])
     return sorted(set(prefixes))
+
+
+def machine_code_objects(map_path, prefixes):
+    """Of prefixes, those whose object gave the link machine code (a non-empty input section in
+    the memory map): in an LTO link the objects compiled -fno-lto, not the link-time ones."""
+    used = set()
+    with open(map_path, encoding="utf-8", errors="replace") as f:
+        text = f.read()
+    text = text.split("Linker script and memory map", 1)[-1]
+    for m in re.finditer(r"^\s+(?:\S+\s+)?0x[0-9a-f]+\s+0x([0-9a-f]+)\s+(\S+)$", text, re.M):
+        if int(m.group(1), 16) == 0:
+            continue
+        am = re.match(r"^.*\((.+)\)$", m.group(2))
+        used.add(os.path.basename(am.group(1) if am else m.group(2)))
+    out = []
+    for prefix in prefixes:
+        if os.path.basename(prefix) + ".obj" in used or os.path.basename(prefix) + ".o" in used:
+            out.append(prefix)
+    return out
 
 
 def module_of(prefix):
@@ -108,6 +139,7 @@ def main():
     ap.add_argument("--print", action="store_true")
     ap.add_argument("--top", type=int, default=10)
     ap.add_argument("--indirect", help="caller: callees ... reached through function pointers")
+    ap.add_argument("--lto", help="prefix of the link-time unit's .su/.ci (LTO image)")
     ap.add_argument("--limit", type=int, help="with --indirect: exit 1 when the worst case "
                     "exceeds this many bytes (the image's reserved stack), or when a pointer call "
                     "of the image is not in the list")
@@ -115,32 +147,87 @@ def main():
 
     image = os.path.splitext(os.path.basename(args.elf))[0]
     in_elf = elf_functions(args.nm, args.elf)
+    if args.lto:
+        in_elf |= {base_name(n) for n in in_elf}
 
     # Functions with stack information, keyed by .ci title (plain name, or "file:name" for static
     # functions, which gcc qualifies so that equal names in two files stay apart).
-    funcs = {}     # title -> dict(name, size, qual, module)
+    funcs = {}     # title -> dict(name, size, qual, module, file)
     calls = {}     # title -> list of callee titles (as written in the .ci)
-    for prefix in load_objects(args.map):
+    objects = load_objects(args.map)
+    units = [(p, module_of(p)) for p in objects]
+    if args.lto:
+        if not os.path.exists(args.lto + ".ci"):
+            sys.exit(f"stack_report.py: {args.lto}.ci not found (link-time unit)")
+        # The module of a function of the link-time unit: the one whose object's .ci has a
+        # function defined in the same source file.
+        module_of_file = {}
+        for prefix, mod in units:
+            if os.path.exists(prefix + ".ci"):
+                for _t, (_n, _s, _q, loc) in parse_ci(prefix + ".ci")[0].items():
+                    module_of_file.setdefault(loc.rsplit(":", 2)[0], mod)
+        # the objects of the modules' link-time twins (<module>_lto, cmake/inclino_cross.cmake)
+        # have no .ci: their module from the object's path (CMakeFiles/<module>_lto.dir/<source>.obj)
+        twin_sources = []
+        mapdir = os.path.dirname(os.path.abspath(args.map))
+        with open(args.map, encoding="utf-8", errors="replace") as f:
+            maptext = f.read()
+        loads = re.findall(r"^LOAD (\S+_lto\.a)$", maptext, re.M)
+        # and the image's own objects (link-time code as well)
+        for m in re.finditer(r"^LOAD \S*CMakeFiles/([^/]+)\.dir/(\S+)\.obj$", maptext, re.M):
+            twin_sources.append((m.group(2).replace("__/", ""), m.group(1)))
+        for path in loads:
+            path = os.path.normpath(os.path.join(mapdir, path))
+            lib = re.sub(r"^lib", "", os.path.basename(path)[:-2])
+            tdir = os.path.join(os.path.dirname(path), "CMakeFiles", lib + ".dir")
+            for obj in glob.glob(os.path.join(tdir, "**", "*.c.obj"), recursive=True):
+                rel = os.path.relpath(obj, tdir)[:-len(".obj")].replace("__/", "")
+                twin_sources.append((rel, lib[:-len("_lto")]))
+
+        def module_of_source(src):
+            if src in module_of_file:
+                return module_of_file[src]
+            hits = {mod for rel, mod in twin_sources if src.endswith("/" + rel)}
+            return hits.pop() if len(hits) == 1 else "?"
+        units = [(p, m) for p, m in units if p in machine_code_objects(args.map, objects)]
+        units.insert(0, (args.lto, None))
+    for prefix, mod in units:
         ci = prefix + ".ci"
         if not os.path.exists(ci):
             continue
         nodes, edges = parse_ci(ci)
-        for title, (name, size, qual, _loc) in nodes.items():
+        for title, (name, size, qual, loc) in nodes.items():
+            if mod is None:  # the link-time unit: the name with its suffix, from the title
+                name = title.rsplit(":", 1)[-1]
             if size is None or name not in in_elf:
                 continue
-            funcs[title] = {"name": name, "size": size, "qual": qual, "module": module_of(prefix)}
+            src = loc.rsplit(":", 2)[0]
+            funcs[title] = {"name": name, "size": size, "qual": qual, "file": src,
+                            "module": mod if mod is not None else module_of_source(src)}
         for src, dst in edges:
             calls.setdefault(src, []).append(dst)
 
-    by_name = {}
-    for title, f in funcs.items():
-        by_name.setdefault(f["name"], title)
+    by_name = {}   # name, and in an LTO image the name without suffix -> titles
+    for title, f in sorted(funcs.items()):
+        by_name.setdefault(f["name"], []).append(title)
+        if args.lto and base_name(f["name"]) != f["name"]:
+            by_name.setdefault(base_name(f["name"]), []).append(title)
+
+    def resolve_all(title):
+        if title in funcs:
+            return [title]
+        name = title.rsplit(":", 1)[-1]
+        hits = by_name.get(name, [])
+        if not hits and args.lto:
+            # a clone the link-time unit gave no node (its code folded into an identical one,
+            # e.g. fx_add.lto_priv.2 at the address of fx_add.lto_priv.0): the largest frame of
+            # that name, conservatively
+            hits = sorted(by_name.get(base_name(name), []), key=lambda t: -funcs[t]["size"])
+        return hits
 
     def resolve(title):
-        if title in funcs:
-            return title
-        name = title.rsplit(":", 1)[-1]
-        return by_name.get(name)
+        hits = resolve_all(title)
+        return hits[0] if hits else None
 
     unknown = set()
     recursion = set()
@@ -223,16 +310,22 @@ def main():
                 if not _sep:
                     sys.exit(f"stack_report.py: {args.indirect}: not 'caller: callees': {raw!r}")
                 extra.setdefault(caller.strip(), []).extend(rest.split())
-        ind_callers = sorted({funcs[t]["name"] for t, cs in calls.items()
+        ind_callers = sorted({base_name(funcs[t]["name"]) for t, cs in calls.items()
                               if INDIRECT in cs and t in funcs})
         listed = {c for cs in extra.values() for c in cs}
 
         def resolve_listed(name):
-            """A listed callee: 'name', or 'file.c:name' for a static function."""
+            """A listed callee: 'name', or 'file.c:name' for a static function; every clone
+            of it in an LTO image."""
             if ":" not in name:
-                return resolve(name)
+                return resolve_all(name)
+            file, _sep, fname = name.rpartition(":")
             hits = [t for t in funcs if t.endswith("/" + name) or t == name]
-            return hits[0] if len(hits) == 1 else None
+            if not hits and args.lto:
+                hits = [t for t, f in funcs.items() if base_name(f["name"]) == fname
+                        and (f["file"] == file or f["file"].endswith("/" + file))]
+                return sorted(hits)
+            return hits if len(hits) == 1 else []
         memo2 = {}
 
         def depth_ind(title, stack):
@@ -243,15 +336,18 @@ def main():
                 return (0, [])
             stack.add(title)
             best = (0, [])
-            callees = [c for c in calls.get(title, []) if c != INDIRECT]
-            callees += extra.get(funcs[title]["name"], [])
-            for callee in callees:
-                r = resolve_listed(callee) if callee in listed else resolve(callee)
-                if r is None:
-                    continue
-                d = depth_ind(r, stack)
-                if (d[0], len(d[1])) > (best[0], len(best[1])):
-                    best = d
+            callees = [(c, False) for c in calls.get(title, []) if c != INDIRECT]
+            callees += [(c, True) for c in extra.get(base_name(funcs[title]["name"]), [])]
+            for callee, via_list in callees:
+                if via_list:
+                    targets = resolve_listed(callee)
+                else:
+                    r = resolve(callee)
+                    targets = [r] if r is not None else []
+                for r in targets:
+                    d = depth_ind(r, stack)
+                    if (d[0], len(d[1])) > (best[0], len(best[1])):
+                        best = d
             stack.discard(title)
             memo2[title] = (funcs[title]["size"] + best[0], [title] + best[1])
             return memo2[title]
@@ -282,7 +378,7 @@ def main():
                 failed.append(f"worst case {worst} bytes against {args.limit} reserved"
                               + (", pointer calls not listed: " + ", ".join(missing)
                                  if missing else ""))
-        unknown_targets = sorted(c for c in listed if resolve_listed(c) is None)
+        unknown_targets = sorted(c for c in listed if not resolve_listed(c))
         lines.append("  pointer calls not in the list (counted as 0): "
                      + (", ".join(missing) if missing else "none"))
         if unknown_targets:

@@ -71,10 +71,14 @@ struct s32k_board {
     uint32_t core_hz;
     struct s32k_hal port;
     struct hal hal;
-    struct spi_bitbang bb;
+    /* The two SPI engines share their memory: a board runs exactly one (spi says which; the
+     * other member is not valid). */
+    union {
+        struct spi_bitbang bb;
+        struct spi_lpspi lp;
+    };
     struct spi_bitbang_fast fast; /* the port's inlined bit loop for bb (s32k_board_bb_frame) */
-    struct spi_lpspi lp;
-    const struct spi_bus *spi; /* the engine chosen */
+    const struct spi_bus *spi;    /* the engine chosen: &bb.bus or &lp.bus (NULL before) */
 };
 
 /*
