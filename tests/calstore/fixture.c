@@ -106,7 +106,10 @@ static bool tm_equal(const struct calrec_tmodel *a, const struct calrec_tmodel *
 bool fix_record_equal(const struct calrec *x, const struct calrec *y)
 {
     unsigned a, k;
-    if (!calrec_binding_equal(&x->binding, &y->binding) || x->valid != y->valid) {
+    /* valid compared as a byte: a record left untouched by a failing call may hold a fill
+     * pattern there, which is no valid bool to load */
+    if (!calrec_binding_equal(&x->binding, &y->binding) ||
+        memcmp(&x->valid, &y->valid, sizeof(bool)) != 0) {
         return false;
     }
     for (a = 0; a < CALREC_AXES; a++) {

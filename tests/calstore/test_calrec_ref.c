@@ -133,19 +133,26 @@ static const int32_t lims[] = {
     17,
 };
 
+/* x modulo 2^32 as an int32 (two's complement, without signed overflow). */
+static int32_t wrap32(int64_t x)
+{
+    const uint32_t u = (uint32_t)(uint64_t)x;
+    return u <= (uint32_t)INT32_MAX ? (int32_t)u : (int32_t)(u - 0x80000000u) + INT32_MIN;
+}
+
 /* Every edge value for word w of base record r: the fixed list +-1 and negated, and for a PWL
  * model the t_span / t_ref that put the last knot exactly at the limit, +-1. */
 static unsigned values(const struct calrec *r, unsigned w, int32_t *out)
 {
     unsigned i, n = 0;
     for (i = 0; i < sizeof lims / sizeof lims[0]; i++) {
-        int32_t v = lims[i];
-        out[n++] = v;
-        out[n++] = -v;
-        out[n++] = v + 1;
-        out[n++] = v - 1;
-        out[n++] = -v + 1;
-        out[n++] = -v - 1;
+        const int64_t v = lims[i]; /* in 64 bits: a limit may be INT32_MAX (wrapped below) */
+        out[n++] = wrap32(v);
+        out[n++] = wrap32(-v);
+        out[n++] = wrap32(v + 1);
+        out[n++] = wrap32(v - 1);
+        out[n++] = wrap32(-v + 1);
+        out[n++] = wrap32(-v - 1);
     }
     if (w >= CALREC_OFF_ACC_TBIAS / 4u && w < CALREC_OFF_GYRO_OFFSET / 4u) {
         unsigned mi = (w - CALREC_OFF_ACC_TBIAS / 4u) / 20u;
