@@ -18,6 +18,7 @@
 #include "inclino/adis_imu.h"
 #include "inclino/app.h"
 #include "inclino/calstore.h"
+#include "inclino/compiler.h"
 #include "inclino/spi_bitbang.h"
 
 /* Pin numbers of the board (placeholders; the MCU family port numbers its pins). */
@@ -95,10 +96,9 @@ static uint32_t faces_done;
 
 #define EPB_FACES_ALL ((1u << CAL_FACES) - 1u)
 
-/* Not inlined (the diagnostic steps, app_start, measure): their locals must not join the frame
+/* INC_NOINLINE (the diagnostic steps, app_start, measure): their locals must not join the frame
  * of the main loop, which is on every path, nor each other's (link-time optimisation inlines
  * across modules; docs/build.md, "Stack analysis"). */
-#define EPB_NOINLINE __attribute__((noinline))
 
 int epb_image_adis_up(struct adis_imu *dev, const struct epb_image_board *b)
 {
@@ -122,7 +122,7 @@ int epb_image_adis_up(struct adis_imu *dev, const struct epb_image_board *b)
 
 /* The end-of-line requests (epb_image.h, epb_diag). The application, not ready after a save,
  * makes the main loop start it again on what the store now holds. */
-static EPB_NOINLINE int diag_face(uint32_t face, uint32_t n)
+static INC_NOINLINE int diag_face(uint32_t face, uint32_t n)
 {
     int err;
     faces_done &= ~(1u << face);
@@ -133,7 +133,7 @@ static EPB_NOINLINE int diag_face(uint32_t face, uint32_t n)
     return err;
 }
 
-static EPB_NOINLINE int diag_save(void)
+static INC_NOINLINE int diag_save(void)
 {
     int err = INC_ERR_STATE;
     if (faces_done == EPB_FACES_ALL) {
@@ -180,7 +180,7 @@ void epb_image_run(const struct hal *hal)
 /* The application started on the store: app_init copies the configuration, so it lives here
  * only ([ADI-EPB]'s budget and the default stillness thresholds at the ADIS default 819.2 SPS,
  * the same on every start). */
-static EPB_NOINLINE int app_start(void)
+static INC_NOINLINE int app_start(void)
 {
     struct app_cfg cfg;
     const struct sensor sensor = {&adis_imu_sensor_ops, &imu}; /* app_init copies it too */
@@ -189,7 +189,7 @@ static EPB_NOINLINE int app_start(void)
 }
 
 /* One result: its own frame (below the main loop's, not inside it). */
-static EPB_NOINLINE int measure(struct app_result *r)
+static INC_NOINLINE int measure(struct app_result *r)
 {
     return app_measure(&app, r);
 }

@@ -7,6 +7,7 @@
 
 #include <stdint.h>
 
+#include "inclino/compiler.h"
 /* Linker-script symbols (s32k1-sections.ld). */
 extern uint32_t __data_load__[];
 extern uint32_t __data_start__[];
@@ -36,7 +37,7 @@ struct s32k1_vector_table {
  * Reset_Handler, whose one frame then holds the locals of every step at once (the stack report's
  * worst case grows). Each step keeps its own frame, live only while it runs.
  */
-#define S32K1_STEP __attribute__((noinline))
+#define S32K1_STEP INC_NOINLINE
 
 void Reset_Handler(void);
 void Default_Handler(void);

@@ -3,14 +3,14 @@
 
 #include <stddef.h>
 
+#include "inclino/compiler.h"
 #include "inclino/s32k_gpio.h"
 #include "inclino/s32k_mmio.h"
 
-/* Out of line also under link-time optimisation (the board images, boards/s32k1/CMakeLists.txt):
+/* INC_NOINLINE: out of line also under link-time optimisation (the board images, boards/s32k1/CMakeLists.txt):
  * the bring-up steps keep their own frames instead of adding theirs to the caller's, and the
  * vectors' handlers (placed before the flash configuration field, s32k1-sections.ld, where space
  * is short) stay one call each instead of a copy of the port's interrupt code per vector. */
-#define S32K_BOARD_OUT_OF_LINE __attribute__((noinline))
 
 static int pins_up(const struct s32k_board_pins *p)
 {
@@ -99,7 +99,7 @@ static int lpspi_up(struct s32k_board *b)
     return err;
 }
 
-S32K_BOARD_OUT_OF_LINE void s32k_board_lpspi_isr(struct s32k_board *b)
+INC_NOINLINE void s32k_board_lpspi_isr(struct s32k_board *b)
 {
     if (b != NULL && b->spi == &b->lp.bus) { /* the engines share memory (s32k_board.h) */
         spi_lpspi_isr(&b->lp);
@@ -107,8 +107,8 @@ S32K_BOARD_OUT_OF_LINE void s32k_board_lpspi_isr(struct s32k_board *b)
     }
 }
 
-S32K_BOARD_OUT_OF_LINE int s32k_board_init_core(struct s32k_board *b,
-                                                const struct s32k_board_desc *desc, bool watchdog)
+INC_NOINLINE int s32k_board_init_core(struct s32k_board *b, const struct s32k_board_desc *desc,
+                                      bool watchdog)
 {
     struct s32k_hal_config hc;
     int err;
@@ -130,7 +130,7 @@ S32K_BOARD_OUT_OF_LINE int s32k_board_init_core(struct s32k_board *b,
     return s32k_hal_init(&b->port, &hc, &b->hal);
 }
 
-S32K_BOARD_OUT_OF_LINE int s32k_board_spi_bitbang(struct s32k_board *b)
+INC_NOINLINE int s32k_board_spi_bitbang(struct s32k_board *b)
 {
     struct spi_bitbang_cfg sc;
     int err;
@@ -238,14 +238,14 @@ uint16_t s32k_board_bb_frame(void *ctx, const struct spi_bitbang_frame *fr, bool
     return (uint16_t)in;
 }
 
-S32K_BOARD_OUT_OF_LINE void s32k_board_port_isr(struct s32k_board *b, uint32_t port)
+INC_NOINLINE void s32k_board_port_isr(struct s32k_board *b, uint32_t port)
 {
     if (b != NULL) {
         s32k_hal_port_isr(&b->port, port);
     }
 }
 
-S32K_BOARD_OUT_OF_LINE void s32k_board_lpit_isr(struct s32k_board *b)
+INC_NOINLINE void s32k_board_lpit_isr(struct s32k_board *b)
 {
     if (b != NULL) {
         s32k_hal_lpit_isr(&b->port);

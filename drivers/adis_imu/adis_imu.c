@@ -9,11 +9,12 @@
 #include "inclino/adis_imu.h"
 
 #include "adis_imu_regs.h"
+#include "inclino/compiler.h"
 
 #define NS_PER_MS 1000000ull
 
-/* Helpers called from several places stay out of line: the M0+ image counts every byte. */
-#define NOINLINE __attribute__((noinline))
+/* Helpers called from several places stay out of line (INC_NOINLINE): the M0+ image counts
+ * every byte. */
 
 /* The part's channel -> register address, per family (0 = the family has no such channel;
  * address 0x00 is FLASH_CNT, never an output). docs/sensor-facts.md §3.2. Every address here is
@@ -44,7 +45,7 @@ static void timing_for(bool low_power, bool burst, struct spi_timing *t)
 }
 
 /* Re-time the bus for low_power (mode) and burst (kind of read). */
-static NOINLINE int set_timing(struct adis_imu *dev, bool low_power, bool burst)
+static INC_NOINLINE int set_timing(struct adis_imu *dev, bool low_power, bool burst)
 {
     struct spi_timing t;
     timing_for(low_power, burst, &t);
@@ -103,7 +104,7 @@ static void start_busy(struct adis_imu *dev, uint32_t ms)
 /* ---- data-ready ---- */
 
 /* The MSC_CTRL data-ready bits (all in the low byte) for a setting; 0 when disabled. */
-static NOINLINE uint16_t dr_bits(bool enable, unsigned line, bool active_low)
+static INC_NOINLINE uint16_t dr_bits(bool enable, unsigned line, bool active_low)
 {
     uint16_t bits = 0u;
     if (enable) {
@@ -172,7 +173,7 @@ static int resync(struct adis_imu *dev)
 }
 
 /* Zero n bytes without libc. */
-static NOINLINE void zero(void *p, size_t n)
+static INC_NOINLINE void zero(void *p, size_t n)
 {
     uint8_t *b = p;
     while (n-- != 0u) {

@@ -22,6 +22,7 @@
 
 #include <stddef.h>
 
+#include "inclino/compiler.h"
 /* The calibration record's binding takes the sensor's identity field by field: same numbers. */
 _Static_assert((int)SENSOR_FAMILY_SCA3000 == (int)CALREC_FAMILY_SCA3000, "family numbers");
 _Static_assert((int)SENSOR_FAMILY_ADIS1625X == (int)CALREC_FAMILY_ADIS1625X, "family numbers");
@@ -444,13 +445,7 @@ static void finish_block(struct app *a, struct app_result *res)
  * app_measure makes must run below app_measure's small frame, not below app_step's locals, which
  * would put them on the deepest stack path of the small images (docs/build.md, "Stack
  * analysis"). */
-#if defined(__GNUC__)
-#define APP_NOINLINE __attribute__((noinline))
-#else
-#define APP_NOINLINE
-#endif
-
-APP_NOINLINE int app_step(struct app *a, const struct sensor_sample *s, int read_err,
+INC_NOINLINE int app_step(struct app *a, const struct sensor_sample *s, int read_err,
                           struct app_corrected *out, bool *done, struct app_result *res)
 {
     struct app_corrected c;

@@ -22,18 +22,13 @@
 
 #include <stddef.h>
 
+#include "inclino/compiler.h"
 #include "inclino/fx128.h"
 
 /* ---- helpers ------------------------------------------------------------------------------ */
 
-/* Keeps a helper out of line so that its 128-bit temporaries live in its own short frame instead
- * of adding to the caller's (gcc merges inlined frames; Cortex-M0+ images have 1.5 KiB of stack).
- * Only an optimisation hint: without GCC-compatible attributes it expands to nothing. */
-#if defined(__GNUC__)
-#define KF_NOINLINE __attribute__((noinline))
-#else
-#define KF_NOINLINE
-#endif
+/* INC_NOINLINE (inclino/compiler.h) keeps a helper out of line so that its 128-bit temporaries
+ * live in its own short frame instead of adding to the caller's (gcc merges inlined frames). */
 
 static int64_t clamp_p(int64_t v, bool *sat)
 {
@@ -150,8 +145,8 @@ int kf_meas_check(const struct kf_meas *ms, unsigned n)
 /* ---- equations (1) and (2) ---------------------------------------------------------------- */
 
 /* (1) x = A x + B u. B u is formed in the state's internal scale (u * 2^KF_X_FRAC). */
-KF_NOINLINE static void predict_x(struct kf *f, const struct kf_model *m, const int32_t *u,
-                                  bool *sat)
+INC_NOINLINE static void predict_x(struct kf *f, const struct kf_model *m, const int32_t *u,
+                                   bool *sat)
 {
     int64_t xn[KF_N_MAX];
     unsigned n = f->n, i, j;
@@ -169,7 +164,7 @@ KF_NOINLINE static void predict_x(struct kf *f, const struct kf_model *m, const 
 }
 
 /* (2) P = A P A' + Q: first AP (rounded once), then (AP) A' for the upper triangle. */
-KF_NOINLINE static void predict_p(struct kf *f, const struct kf_model *m, bool *sat)
+INC_NOINLINE static void predict_p(struct kf *f, const struct kf_model *m, bool *sat)
 {
     int64_t am[KF_N_MAX][KF_N_MAX];
     unsigned n = f->n, i, j, k;
@@ -220,7 +215,7 @@ int kf_predict(struct kf *f, const struct kf_model *m, const int32_t *u)
 /* ---- equations (3), (4), (5) -------------------------------------------------------------- */
 
 /* h P h' and the innovation z - h x, in separate small frames (stack economy on Cortex-M0+). */
-KF_NOINLINE static int64_t row_dot_v(const fx_q30_t *h, const int64_t *v, unsigned n, bool *sat)
+INC_NOINLINE static int64_t row_dot_v(const fx_q30_t *h, const int64_t *v, unsigned n, bool *sat)
 {
     fx_i128_t acc = fx_i128_from_i64(0);
     unsigned i;
@@ -231,7 +226,7 @@ KF_NOINLINE static int64_t row_dot_v(const fx_q30_t *h, const int64_t *v, unsign
 
 /* k = v / s in Q30 (int64: |k| <= sqrt(P_ii / s) <= 2^30 for a valid P, i.e. 2^60 raw), then
  * x += k y. Returns k. */
-KF_NOINLINE static int64_t gain_and_state(int64_t *x, int64_t v, int64_t s, int64_t y, bool *sat)
+INC_NOINLINE static int64_t gain_and_state(int64_t *x, int64_t v, int64_t s, int64_t y, bool *sat)
 {
     int64_t k, dx;
     if (fx_i128_div_i64(fx_i128_mul(v, (int64_t)1 << FX_Q30_SHIFT), s, &k) != INC_OK) *sat = true;
@@ -243,8 +238,8 @@ KF_NOINLINE static int64_t gain_and_state(int64_t *x, int64_t v, int64_t s, int6
 }
 
 /* P+_ij = P_ij - k_i v_j - v_i k_j + (s k_i) k_j, rounded once (Joseph form, see the top). */
-KF_NOINLINE static int64_t joseph(int64_t pij, int64_t ki, int64_t vi, int64_t kj, int64_t vj,
-                                  int64_t wi, bool *sat)
+INC_NOINLINE static int64_t joseph(int64_t pij, int64_t ki, int64_t vi, int64_t kj, int64_t vj,
+                                   int64_t wi, bool *sat)
 {
     fx_i128_t t = fx_i128_mul(wi, kj);
     t = fx_i128_sub(t, fx_i128_mul(ki, vj));

@@ -22,15 +22,10 @@
 
 #include <stddef.h>
 
+#include "inclino/compiler.h"
 #include "inclino/fx128.h"
 
 #define NS_PER_S 1000000000u
-
-#if defined(__GNUC__)
-#define TILT_NOINLINE __attribute__((noinline))
-#else
-#define TILT_NOINLINE
-#endif
 
 /* ---- accelerometer angles --------------------------------------------------------------- */
 
@@ -317,9 +312,9 @@ static int32_t same_turn(fx_q16_t acc_angle, int64_t x)
 }
 
 /* One axis, one step (the filter has started, 0 < dt <= dt_max). Kept out of line so that its
- * model arrays do not add to tilt_step's frame (see KF_NOINLINE in kf.c). */
-TILT_NOINLINE static bool step_axis(struct tilt *t, unsigned i, fx_q16_t w, bool gyro_ok,
-                                    bool acc_ok, fx_q16_t acc_angle, int64_t dtq)
+ * model arrays do not add to tilt_step's frame (INC_NOINLINE, inclino/compiler.h). */
+INC_NOINLINE static bool step_axis(struct tilt *t, unsigned i, fx_q16_t w, bool gyro_ok,
+                                   bool acc_ok, fx_q16_t acc_angle, int64_t dtq)
 {
     const struct tilt_axis_config *c = &t->cfg.axis[i];
     struct tilt_axis_state *s = &t->ax[i];
