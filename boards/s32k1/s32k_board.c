@@ -144,11 +144,10 @@ INC_NOINLINE int s32k_board_spi_bitbang(struct s32k_board *b)
     sc.sclk = b->desc->pins.sclk;
     sc.mosi = b->desc->pins.mosi;
     sc.miso = b->desc->pins.miso;
-    err = spi_bitbang_init(&b->bb, &sc);
+    b->fast.frame = s32k_board_bb_frame;
+    b->fast.ctx = b;
+    err = spi_bitbang_init_fast(&b->bb, &sc, &b->fast);
     if (err == INC_OK) {
-        b->fast.frame = s32k_board_bb_frame;
-        b->fast.ctx = b;
-        spi_bitbang_set_fast(&b->bb, &b->fast);
         b->spi = &b->bb.bus;
     }
     return err;

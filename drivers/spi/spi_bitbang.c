@@ -19,10 +19,11 @@ static inline void wait(const struct hal *hal, uint32_t ns)
     }
 }
 
-static int bb_transfer(void *ctx, struct spi_dev *dev, const uint16_t *tx, uint16_t *rx, size_t n,
-                       enum spi_cs_policy cs)
+/* The transfer of both engines: fast_only (a constant in each caller) leaves the per-bit HAL
+ * loop out of an engine made by spi_bitbang_init_fast, whose fast path is never NULL. */
+static inline int transfer(struct spi_bitbang *bb, struct spi_dev *dev, const uint16_t *tx,
+                           uint16_t *rx, size_t n, enum spi_cs_policy cs, bool fast_only)
 {
-    struct spi_bitbang *bb = ctx;
     const struct hal *hal = bb->cfg.hal;
     const struct spi_timing *t = &dev->cfg.timing;
     const hal_pin_t sclk = bb->cfg.sclk, mosi = bb->cfg.mosi, miso = bb->cfg.miso;
@@ -68,7 +69,7 @@ static int bb_transfer(void *ctx, struct spi_dev *dev, const uint16_t *tx, uint1
             lead = gap;
         }
 
-        if (bb->fast != NULL) {
+        if (fast_only || bb->fast != NULL) {
             struct spi_bitbang_frame fr;
             fr.word = word;
             fr.bits = (uint8_t)bits;
@@ -83,7 +84,7 @@ static int bb_transfer(void *ctx, struct spi_dev *dev, const uint16_t *tx, uint1
         } else {
             b = bits;
         }
-        while (b-- > 0u) {
+        while (!fast_only && b-- > 0u) {
             const bool out = ((word >> b) & 1u) != 0u;
             const uint32_t before = b == bits - 1u ? lead : h2;
             if (!cpha) {
@@ -125,11 +126,16 @@ static int bb_transfer(void *ctx, struct spi_dev *dev, const uint16_t *tx, uint1
     return INC_OK;
 }
 
-void spi_bitbang_set_fast(struct spi_bitbang *bb, const struct spi_bitbang_fast *fast)
+static int bb_transfer(void *ctx, struct spi_dev *dev, const uint16_t *tx, uint16_t *rx, size_t n,
+                       enum spi_cs_policy cs)
 {
-    if (bb != NULL) {
-        bb->fast = fast;
-    }
+    return transfer(ctx, dev, tx, rx, n, cs, false);
+}
+
+static int bb_transfer_fast(void *ctx, struct spi_dev *dev, const uint16_t *tx, uint16_t *rx,
+                            size_t n, enum spi_cs_policy cs)
+{
+    return transfer(ctx, dev, tx, rx, n, cs, true);
 }
 
 static const struct spi_bus_ops bb_ops = {
@@ -137,7 +143,20 @@ static const struct spi_bus_ops bb_ops = {
     .attach = bb_attach,
 };
 
-int spi_bitbang_init(struct spi_bitbang *bb, const struct spi_bitbang_cfg *cfg)
+static const struct spi_bus_ops bb_fast_ops = {
+    .transfer = bb_transfer_fast,
+    .attach = bb_attach,
+};
+
+void spi_bitbang_set_fast(struct spi_bitbang *bb, const struct spi_bitbang_fast *fast)
+{
+    if (bb != NULL && (fast != NULL || bb->bus.ops != &bb_fast_ops)) {
+        bb->fast = fast;
+    }
+}
+
+static int init(struct spi_bitbang *bb, const struct spi_bitbang_cfg *cfg,
+                const struct spi_bus_ops *ops)
 {
     int err;
     if (bb == NULL || cfg == NULL) {
@@ -153,7 +172,7 @@ int spi_bitbang_init(struct spi_bitbang *bb, const struct spi_bitbang_cfg *cfg)
     }
     bb->cfg = *cfg;
     bb->fast = NULL;
-    bb->bus.ops = &bb_ops;
+    bb->bus.ops = ops;
     bb->bus.ctx = bb;
     bb->sclk_level = false;
     bb->mosi_level = false;
@@ -162,4 +181,23 @@ int spi_bitbang_init(struct spi_bitbang *bb, const struct spi_bitbang_cfg *cfg)
     bb->last_cs = HAL_PIN_NONE;
     bb->last_release_ns = 0;
     return INC_OK;
+}
+
+int spi_bitbang_init(struct spi_bitbang *bb, const struct spi_bitbang_cfg *cfg)
+{
+    return init(bb, cfg, &bb_ops);
+}
+
+int spi_bitbang_init_fast(struct spi_bitbang *bb, const struct spi_bitbang_cfg *cfg,
+                          const struct spi_bitbang_fast *fast)
+{
+    int err;
+    if (fast == NULL || fast->frame == NULL) {
+        return INC_ERR_NULL;
+    }
+    err = init(bb, cfg, &bb_fast_ops);
+    if (err == INC_OK) {
+        bb->fast = fast;
+    }
+    return err;
 }

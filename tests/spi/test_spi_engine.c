@@ -199,6 +199,100 @@ static void test_odd_period(void)
     CHECK_EQ_INT(cs_rise[0] - cs_fall[0], 100u + 48u * 1001u - 501u + 100u);
 }
 
+/* A port's fast path as struct spi_bitbang_fast documents it, written on the HAL (a real port
+ * inlines its pins; the S32K1 boards' s32k_board_bb_frame): counts its frames. */
+static unsigned fast_frames;
+
+static void fast_wait(uint32_t ns)
+{
+    if (ns != 0u) {
+        hal_delay_ns(&board.hal, ns);
+    }
+}
+
+static uint16_t fast_frame(void *ctx, const struct spi_bitbang_frame *fr, bool *mosi_out)
+{
+    bool mosi = fr->mosi_level;
+    uint16_t in = 0;
+    unsigned b = fr->bits;
+    (void)ctx;
+    fast_frames++;
+    while (b-- > 0u) {
+        const bool out = ((fr->word >> b) & 1u) != 0u;
+        const uint32_t before = b == fr->bits - 1u ? fr->lead_ns : fr->h2_ns;
+        if (!fr->cpha) {
+            if (out != mosi) {
+                hal_pin_write(&board.hal, SIM_BOARD_MOSI, out);
+                mosi = out;
+            }
+            fast_wait(before);
+            in = (uint16_t)((in << 1) | (hal_pin_read(&board.hal, SIM_BOARD_MISO) ? 1u : 0u));
+            hal_pin_write(&board.hal, SIM_BOARD_SCLK, !fr->idle);
+            fast_wait(fr->h1_ns);
+            hal_pin_write(&board.hal, SIM_BOARD_SCLK, fr->idle);
+        } else {
+            fast_wait(before);
+            hal_pin_write(&board.hal, SIM_BOARD_SCLK, !fr->idle);
+            if (out != mosi) {
+                hal_pin_write(&board.hal, SIM_BOARD_MOSI, out);
+                mosi = out;
+            }
+            fast_wait(fr->h1_ns);
+            in = (uint16_t)((in << 1) | (hal_pin_read(&board.hal, SIM_BOARD_MISO) ? 1u : 0u));
+            hal_pin_write(&board.hal, SIM_BOARD_SCLK, fr->idle);
+        }
+    }
+    *mosi_out = mosi;
+    return in;
+}
+
+/* The engine of spi_bitbang_init_fast (no per-bit loop of its own): every mode and size, CS
+ * held and toggled, through the fast path, with the loopback's answers and no timing
+ * violation; set_fast(NULL) cannot take its fast path away; its argument errors. */
+static void test_init_fast(void)
+{
+    static const struct spi_bitbang_fast fast = {fast_frame, NULL};
+    static const struct spi_bitbang_fast no_frame = {NULL, NULL};
+    struct spi_bitbang_cfg bc;
+    struct spi_dev_cfg dc;
+    uint8_t mode;
+    unsigned p;
+    for (mode = 0; mode < 4u; mode++) {
+        for (p = 0; p < 4u; p++) {
+            const uint8_t bits = p < 2u ? 16u : 8u;
+            const enum spi_cs_policy cs = (p & 1u) != 0u ? SPI_CS_HOLD : SPI_CS_TOGGLE;
+            REQUIRE(setup(mode, mode, bits, bits == 16u ? 0x5AA5u : 0x5Au) == 0);
+            bc = board.spi.cfg;
+            dc = dev.cfg;
+            REQUIRE(spi_bitbang_init_fast(&board.spi, &bc, &fast) == INC_OK);
+            spi_bitbang_set_fast(&board.spi, NULL); /* ignored: no per-bit path */
+            REQUIRE(spi_dev_init(&dev, &board.spi.bus, &dc) == INC_OK);
+            n_fall = n_rise = 0;
+            fast_frames = 0;
+            {
+                const uint16_t *w = bits == 16u ? words16 : words8;
+                uint16_t rx[NWORDS];
+                unsigned i;
+                CHECK_OK(spi_transfer(&dev, w, rx, NWORDS, cs));
+                CHECK_EQ_INT(fast_frames, NWORDS);
+                CHECK_EQ_HEX(rx[0], bits == 16u ? 0x5AA5u : 0x5Au);
+                for (i = 1; i < NWORDS; i++) {
+                    CHECK_EQ_HEX(rx[i], w[i - 1]);
+                }
+                CHECK_EQ_INT(board.log.total, 0);
+                CHECK_EQ_INT(n_fall, cs == SPI_CS_TOGGLE ? NWORDS : 1u);
+            }
+        }
+    }
+    bc = board.spi.cfg;
+    CHECK_ERR(spi_bitbang_init_fast(&board.spi, &bc, NULL), INC_ERR_NULL);
+    CHECK_ERR(spi_bitbang_init_fast(&board.spi, &bc, &no_frame), INC_ERR_NULL);
+    CHECK_ERR(spi_bitbang_init_fast(NULL, &bc, &fast), INC_ERR_NULL);
+    CHECK_ERR(spi_bitbang_init_fast(&board.spi, NULL, &fast), INC_ERR_NULL);
+    bc.miso = bc.mosi;
+    CHECK_ERR(spi_bitbang_init_fast(&board.spi, &bc, &fast), INC_ERR_INVAL);
+}
+
 static void test_tx_null_sends_zeros(void)
 {
     uint16_t rx[2];
@@ -284,5 +378,6 @@ int main(void)
     UNIT_RUN(test_odd_period);
     UNIT_RUN(test_tx_null_sends_zeros);
     UNIT_RUN(test_errors);
+    UNIT_RUN(test_init_fast);
     return unit_report();
 }
