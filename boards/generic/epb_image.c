@@ -83,10 +83,14 @@ volatile struct epb_diag epb_diag;
 struct app_result epb_output;
 volatile uint32_t epb_output_count;
 
+struct calrec_binding epb_identity;
+
 static struct spi_bitbang spi;
 static struct adis_imu imu;
 static struct calstore store;
 static struct app app;
+
+#if EPB_IMAGE_EOL
 /* The end-of-line faces stay static: they live from the first FACE request to the SAVE, across
  * the measurements in between and across a sensor re-init. faces_done has bit f set while
  * faces[f] holds a face measured since the last SAVE. The record the SAVE builds lives in the
@@ -95,6 +99,7 @@ static struct app_face faces[CAL_FACES];
 static uint32_t faces_done;
 
 #define EPB_FACES_ALL ((1u << CAL_FACES) - 1u)
+#endif
 
 /* INC_NOINLINE (the diagnostic steps, app_start, measure): their locals must not join the frame
  * of the main loop, which is on every path, nor each other's (link-time optimisation inlines
@@ -120,6 +125,7 @@ int epb_image_adis_up(struct adis_imu *dev, const struct epb_image_board *b)
     return err;
 }
 
+#if EPB_IMAGE_EOL
 /* The end-of-line requests (epb_image.h, epb_diag). The application, not ready after a save,
  * makes the main loop start it again on what the store now holds. */
 static INC_NOINLINE int diag_face(uint32_t face, uint32_t n)
@@ -157,6 +163,16 @@ static void diag_serve(void)
     epb_diag.status = err;
     epb_diag.cmd = EPB_DIAG_NONE;
 }
+#else
+/* No end of line on the device (epb_image.h): FACE and SAVE are refused, the rest as above. */
+static void diag_serve(void)
+{
+    const uint32_t cmd = epb_diag.cmd;
+    epb_diag.status = cmd == EPB_DIAG_FACE || cmd == EPB_DIAG_SAVE ? INC_ERR_UNSUPPORTED
+                                                                   : INC_ERR_INVAL;
+    epb_diag.cmd = EPB_DIAG_NONE;
+}
+#endif
 
 void epb_image_run(const struct hal *hal)
 {
@@ -184,8 +200,13 @@ static INC_NOINLINE int app_start(void)
 {
     struct app_cfg cfg;
     const struct sensor sensor = {&adis_imu_sensor_ops, &imu}; /* app_init copies it too */
+    int err;
     (void)app_cfg_default(&cfg, adis_imu_sample_rate_msps(ADIS_IMU_SMPL_PRD_DEFAULT));
-    return app_init(&app, &cfg, &sensor, &store);
+    err = app_init(&app, &cfg, &sensor, &store);
+    if (err == INC_OK) {
+        epb_identity = app.id;
+    }
+    return err;
 }
 
 /* One result: its own frame (below the main loop's, not inside it). */

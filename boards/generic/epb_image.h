@@ -36,6 +36,13 @@ int epb_image_adis_up(struct adis_imu *dev, const struct epb_image_board *b);
 const struct calstore_config *epb_image_no_flash(void);
 
 /*
+ * EPB_IMAGE_EOL (a compile definition of the image, default 1): 1 gives the on-device end of
+ * line below; 0 leaves it out (the S32K116 image: its flash budget, docs/boards.md). Without it
+ * the record comes from the station: it reads the block means of an uncalibrated part from
+ * epb_output face by face and soak by soak, and epb_identity; calstation fits the record and
+ * writes it as a data-flash image (`calstation dflash`) that the probe programs
+ * (docs/calibration.md, 4.6).
+ *
  * The end-of-line requests the diagnostic layer makes (epb_diag), served by the main loop after
  * the next result, one at a time: the requester writes face and n, then cmd; the loop writes
  * status, then clears cmd.
@@ -47,8 +54,13 @@ const struct calstore_config *epb_image_no_flash(void);
  *                  then forgotten and the application starts again on what the store holds (the
  *                  new record; after a failed save the one before). INC_ERR_STATE (faces kept) when
  *                  a face is missing.
- * Any other cmd: INC_ERR_INVAL. A sensor re-init keeps the faces.
+ * With EPB_IMAGE_EOL 0 both are refused with INC_ERR_UNSUPPORTED. Any other cmd: INC_ERR_INVAL.
+ * A sensor re-init keeps the faces.
  */
+#ifndef EPB_IMAGE_EOL
+#define EPB_IMAGE_EOL 1
+#endif
+
 enum epb_diag_cmd {
     EPB_DIAG_NONE = 0,
     EPB_DIAG_FACE = 1,
@@ -63,6 +75,9 @@ struct epb_diag {
 };
 
 extern volatile struct epb_diag epb_diag;
+/* The identity of the part the application last started on (zero before the first start): the
+ * binding a record must carry (calrec.h), six little-endian words as struct calrec_binding. */
+extern struct calrec_binding epb_identity;
 /* The newest result (see epb_image.c) and the count of results so far. */
 extern struct app_result epb_output;
 extern volatile uint32_t epb_output_count;

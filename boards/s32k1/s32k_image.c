@@ -23,7 +23,7 @@ S32K1_STEP const struct calstore_config *s32k_image_store(const struct s32k_boar
     fc.dflash_base = S32K_DFLASH_BASE;
     fc.poll_limit = 0u;
     if (s32k_ftfc_init(&ftfc, &fc) != INC_OK ||
-        calstore_ftfc_config(&ftfc, 0u, &store_cfg) != INC_OK) {
+        calstore_ftfc_config(&ftfc, CALSTORE_FTFC_IMAGE_SECTOR, &store_cfg) != INC_OK) {
         return epb_image_no_flash();
     }
     return &store_cfg;

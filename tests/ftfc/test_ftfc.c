@@ -325,8 +325,99 @@ static void test_power_cut_every_step(void)
     CHECK_EQ_INT(model.stats.reprograms, 0);
 }
 
-int main(void)
+/* ------------------------------------------------------------------ the station's data-flash image */
+
+/* The file the station's probe programs (calstation dflash, docs/calibration.md 4.6), written
+ * over a D-flash that holds an older pair of records, then a power cycle: on both parts the
+ * images' store (calstore_ftfc_config at CALSTORE_FTFC_IMAGE_SECTOR) loads the record of
+ * record.bin, from slot 0 with sequence number 1; a part of another serial number gets
+ * INC_ERR_MISMATCH; an on-device save afterwards goes to slot 1 with sequence number 2. */
+static const char *dflash_path, *record_path;
+
+static size_t read_file(const char *path, uint8_t *buf, size_t cap)
 {
+    FILE *f = fopen(path, "rb");
+    size_t n = 0;
+    if (f != NULL) {
+        n = fread(buf, 1, cap, f);
+        if (fgetc(f) != EOF) {
+            n = cap + 1u; /* larger than expected */
+        }
+        fclose(f);
+    }
+    return n;
+}
+
+static void test_station_dflash_image(void)
+{
+    static uint8_t img[2u * S32K_DFLASH_SECTOR + 1u], rec_img[CALREC_IMAGE_SIZE + 1u];
+    static uint8_t a[CALREC_IMAGE_SIZE], b[CALREC_IMAGE_SIZE];
+    static const enum s32k_ftfc_part parts[2] = {S32K_FTFC_S32K116, S32K_FTFC_S32K144};
+    struct calrec want, out, old;
+    struct calrec_binding other;
+    struct calstore_info info;
+    uint32_t seq = 0u;
+    unsigned p;
+    const uint32_t off = CALSTORE_FTFC_IMAGE_SECTOR * S32K_DFLASH_SECTOR;
+    REQUIRE(read_file(dflash_path, img, sizeof img) == 2u * S32K_DFLASH_SECTOR);
+    REQUIRE(read_file(record_path, rec_img, sizeof rec_img) == CALREC_IMAGE_SIZE);
+    memset(&want, 0, sizeof want);
+    /* the record file decoded against the binding it carries (CALREC_OFF_BINDING, calrec.h) */
+    other.family = calrec_get_le32(&rec_img[CALREC_OFF_BINDING]);
+    other.product = calrec_get_le32(&rec_img[CALREC_OFF_BINDING + 4u]);
+    other.revision = calrec_get_le32(&rec_img[CALREC_OFF_BINDING + 8u]);
+    other.serial = calrec_get_le32(&rec_img[CALREC_OFF_BINDING + 12u]);
+    other.lot_id1 = calrec_get_le32(&rec_img[CALREC_OFF_BINDING + 16u]);
+    other.lot_id2 = calrec_get_le32(&rec_img[CALREC_OFF_BINDING + 20u]);
+    REQUIRE(calrec_decode(rec_img, CALREC_IMAGE_SIZE, &other, &want, &seq) == INC_OK);
+    for (p = 0; p < 2u; p++) {
+        REQUIRE(model_up(parts[p], 0x0, 0, 0, true) == 0);
+        REQUIRE(drv_up(parts[p], 0) == 0);
+        REQUIRE(calstore_ftfc_config(&drv, CALSTORE_FTFC_IMAGE_SECTOR, &scfg) == 0);
+        REQUIRE(calstore_init(&store, &scfg) == 0);
+        /* an earlier calibration: two saves, the newer (seq 2) in slot 1 */
+        fix_record(&old);
+        old.binding = want.binding;
+        REQUIRE(calstore_save(&store, &old, NULL) == 0);
+        REQUIRE(calstore_save(&store, &old, &info) == 0);
+        CHECK_EQ_INT(info.used_slot, 1);
+        /* the probe: both sectors erased and programmed with the file's bytes */
+        memcpy(&model.mem[off], img, 2u * S32K_DFLASH_SECTOR);
+        sim_s32k_ftfc_power_on(&model);
+        memset(&drv, 0, sizeof drv);
+        memset(&store, 0, sizeof store);
+        REQUIRE(drv_up(parts[p], 0) == 0);
+        REQUIRE(calstore_ftfc_config(&drv, CALSTORE_FTFC_IMAGE_SECTOR, &scfg) == 0);
+        REQUIRE(calstore_init(&store, &scfg) == 0);
+        CHECK_OK(calstore_load(&store, &want.binding, &out, &info));
+        CHECK_EQ_INT(info.used_slot, 0);
+        CHECK_EQ_INT(info.seq, 1);
+        CHECK_EQ_INT(calrec_encode(&want, 1u, a, sizeof a), 0);
+        CHECK_EQ_INT(calrec_encode(&out, 1u, b, sizeof b), 0);
+        CHECK(memcmp(a, b, sizeof a) == 0);
+        other = want.binding;
+        other.serial ^= 1u;
+        CHECK_ERR(calstore_load(&store, &other, &out, NULL), INC_ERR_MISMATCH);
+        CHECK_OK(calstore_save(&store, &want, &info)); /* a later on-device save */
+        CHECK_EQ_INT(info.used_slot, 1);
+        CHECK_EQ_INT(info.seq, 2);
+        CHECK_EQ_INT(model.stats.reprograms, 0);
+        bus_clean();
+    }
+}
+
+int main(int argc, char **argv)
+{
+    if (argc == 3) { /* test ftfc_dflash: the files of tests/ftfc/dflash.cmake */
+        dflash_path = argv[1];
+        record_path = argv[2];
+        UNIT_RUN(test_station_dflash_image);
+        return unit_report();
+    }
+    if (argc != 1) {
+        fprintf(stderr, "usage: test_ftfc [DFLASH.bin RECORD.bin]\n");
+        return 2;
+    }
     UNIT_RUN(test_partition_policy);
     UNIT_RUN(test_erase_program_read);
     UNIT_RUN(test_accerr_and_timeouts);

@@ -6,6 +6,7 @@
 //   calstation fit FILE.csv [--tmodel best|none|linear|parabola|lorentz|pwl|lorentz-cubic]
 //                  [--out RECORD.bin] [--seq N]
 //   calstation show RECORD.bin
+//   calstation dflash RECORD.bin --out FILE [--format srec|ihex]
 //   calstation compare [--cycles N] [--seeds S1,S2,...]   (part A plus seeded parts; default 2)
 //
 // Exit status: 0 success, 1 bad input (message on stderr, nothing written), 2 usage error.
@@ -14,6 +15,7 @@
 #include "inclino/error.h"
 #include "inclino/tool_summary.h"
 #include "inclino/calstation/compare.hpp"
+#include "inclino/calstation/dflash.hpp"
 #include "inclino/calstation/fit.hpp"
 #include "inclino/calstation/record.hpp"
 #include "inclino/calstation/samples.hpp"
@@ -47,6 +49,7 @@ int usage()
         "  calstation fit FILE.csv [--tmodel best|none|linear|parabola|lorentz|pwl|lorentz-cubic]\n"
         "                 [--out RECORD.bin] [--seq N]\n"
         "  calstation show RECORD.bin\n"
+        "  calstation dflash RECORD.bin --out FILE [--format srec|ihex]\n"
         "  calstation compare [--cycles N] [--seeds S1,S2,...]\n",
         stderr);
     tool_summary_add("error", "usage");
@@ -930,6 +933,58 @@ int cmd_compare(int argc, char **argv)
     return 0;
 }
 
+// calstation dflash REC --out FILE: the record as the S32K1 images' data flash holds it, for the
+// probe (docs/calibration.md 4.6).
+int cmd_dflash(int argc, char **argv)
+{
+    std::string rec_path, out, format = "srec";
+    for (int i = 0; i < argc; i++) {
+        const std::string a = argv[i];
+        const bool has_val = i + 1 < argc;
+        if ((a == "-o" || a == "--out") && has_val) {
+            out = argv[++i];
+        } else if (a == "--format" && has_val) {
+            format = argv[++i];
+            if (format != "srec" && format != "ihex")
+                return bad_arg("--format", argv[i], "srec or ihex");
+        } else if (!a.empty() && a[0] != '-' && rec_path.empty()) {
+            rec_path = a;
+        } else {
+            return usage();
+        }
+    }
+    if (rec_path.empty() || out.empty()) return usage();
+    struct calrec r;
+    struct calrec_binding b;
+    uint32_t seq = 0, rec_format = 0;
+    const int st = load_record(rec_path.c_str(), r, b, seq, rec_format);
+    if (st != 0) return st;
+    std::vector<uint8_t> bytes;
+    uint32_t addr = 0;
+    std::string e = dflash_image(r, bytes, addr);
+    if (!e.empty()) {
+        std::fprintf(stderr, "calstation: %s: %s\n", rec_path.c_str(), e.c_str());
+        return refuse(e, "ERR_RANGE", "record");
+    }
+    e = write_output(out, format == "srec" ? to_srec(bytes, addr) : to_ihex(bytes, addr),
+                     {rec_path});
+    if (!e.empty()) return write_refused(e);
+    const uint32_t crc = calrec_get_le32(&bytes[CALREC_OFF_CRC]);
+    std::printf("wrote %s: %s, data flash 0x%08X..0x%08X (two sectors: slot 0 the record of %s, "
+                "seq 1, CRC-32 0x%08X; slot 1 erased)\n",
+                out.c_str(), format == "srec" ? "S-records" : "Intel HEX",
+                static_cast<unsigned>(addr), static_cast<unsigned>(addr + bytes.size() - 1u),
+                rec_path.c_str(), static_cast<unsigned>(crc));
+    tool_summary_add("format", "%s", format.c_str());
+    tool_summary_add("address", "0x%08X", static_cast<unsigned>(addr));
+    tool_summary_add("bytes", "%zu", bytes.size());
+    tool_summary_add("seq", "1");
+    tool_summary_add("crc", "0x%08X", static_cast<unsigned>(crc));
+    tool_summary_add("family", "%u", static_cast<unsigned>(b.family));
+    tool_summary_add("serial", "%u", static_cast<unsigned>(b.serial));
+    return 0;
+}
+
 int run(int argc, char **argv)
 {
     if (argc < 2) return usage();
@@ -939,6 +994,7 @@ int run(int argc, char **argv)
     if (cmd == "fit") return cmd_fit(argc - 2, argv + 2);
     if (cmd == "compare") return cmd_compare(argc - 2, argv + 2);
     if (cmd == "show") return cmd_show(argc - 2, argv + 2);
+    if (cmd == "dflash") return cmd_dflash(argc - 2, argv + 2);
     if (cmd == "apply") return cmd_apply(argc - 2, argv + 2);
     return usage();
 }

@@ -19,6 +19,10 @@ extern "C" {
 
 extern const struct calstore_flash_ops calstore_ftfc_ops;
 
+/* The first D-flash sector the S32K1 images keep the record in (slot 0; slot 1 in the next):
+ * boards/s32k1 (s32k_image_store) and the station's data-flash image (calstation dflash). */
+#define CALSTORE_FTFC_IMAGE_SECTOR 0u
+
 /*
  * A calstore configuration for an initialised FTFC driver: slot 0 in sector first_sector, slot
  * 1 in the next one. Returns 0, INC_ERR_NULL, INC_ERR_STATE (driver not ready) or
