@@ -25,8 +25,9 @@ struct s32k1_vector_table {
 };
 
 /*
- * Start-up code: s32k1-sections.ld places the sections .text.s32k_early.* between the vector
- * table and the flash configuration field at 0x400. By section name, not by object file, so the
+ * Start-up code: s32k1-sections.ld places the sections .text.s32k_early.* first after the vector
+ * table, before the other code that fills the space up to the flash configuration field at
+ * 0x400 (what does not fit goes on after it). By section name, not by object file, so the
  * placement holds with link-time optimisation too (one link-time object, no startup_s32k1.c.obj);
  * one section per function, so --gc-sections still drops what an image does not reach.
  */
