@@ -40,7 +40,8 @@
 #include "inclino/tilt.h"
 #include "unit.h"
 
-#define PIPELINE_CRC 0x0ca6601cu /* the test prints the value it computes */
+/* the test prints the value it computes; changed when the grade came from the components (slope.c) */
+#define PIPELINE_CRC 0x3942396au
 
 #define PIPELINE_VALID 0x70fu /* which blocks are valid (bit i: block i) */
 

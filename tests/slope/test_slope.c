@@ -233,7 +233,7 @@ static void test_against_double(void)
 {
     struct slope_cfg c = base_cfg();
     struct slope_result r;
-    double worst_t = 0, worst_b = 0;
+    double worst_t = 0, worst_b = 0, worst_g = 0, worst_gb = 0;
     int i, m;
     c.max_slope_deg = FX_Q16_INT(60);
     c.budget.sensitivity = (fx_q30_t)lround(0.002 * 1073741824.0);
@@ -247,6 +247,7 @@ static void test_against_double(void)
             double th = (urand() * 2.0 - 1.0) * 55.0 * D2R;
             struct slope_input in = level_input(sin(th), 0.0, cos(th));
             double s = q16(in.accel_g[0]), g = q16(in.accel_g[2]), t, b = 0, e_exact;
+            double gr, gb = 0; /* the exact grade for these inputs and its exact bound */
             in.n_samples = 1u + (uint32_t)(urand() * 5000.0);
             REQUIRE(slope_estimate(&c, &in, &r) == 0);
             e_exact = fabs(s) * 0.002 + q16(c.budget.offset_g) + q16(c.budget.nonlinearity_g) +
@@ -262,6 +263,10 @@ static void test_against_double(void)
                     t = asin(s) / D2R;
                     b = fmax(asin(fmin(1.0, s + e_s)) / D2R - t,
                              t - asin(fmax(-1.0, s - e_s)) / D2R);
+                    /* 100 tan(asin(x)) = 100 x / sqrt(1 - x^2), monotonic: the two ends */
+                    gr = 100.0 * s / sqrt(1.0 - s * s);
+                    gb = fmax(100.0 * (s + e_s) / sqrt(1.0 - (s + e_s) * (s + e_s)) - gr,
+                              gr - 100.0 * (s - e_s) / sqrt(1.0 - (s - e_s) * (s - e_s)));
                 } else {
                     /* the cross axis reads 0 +- its own e_a (no sensitivity share): the
                      * gravity left perpendicular to the slope axis, |(A_g, A_c)|, lies in
@@ -270,10 +275,12 @@ static void test_against_double(void)
                     const double e_c = e_exact - fabs(s) * 0.002;
                     const double h_lo = fabs(g) - e_g, h_hi = hypot(fabs(g) + e_g, e_c);
                     t = atan2(s, g) / D2R;
+                    gr = 100.0 * s / g; /* the cross axis reads 0: A_h = g */
                     for (k = 0; k < 4; k++) {
-                        double d = fabs(
-                            atan2(s + ((k & 1) ? e_s : -e_s), (k & 2) ? h_hi : h_lo) / D2R - t);
+                        const double cs = s + ((k & 1) ? e_s : -e_s), ch = (k & 2) ? h_hi : h_lo;
+                        double d = fabs(atan2(cs, ch) / D2R - t);
                         b = fmax(b, d);
+                        gb = fmax(gb, fabs(100.0 * cs / ch - gr));
                     }
                 }
             }
@@ -282,12 +289,30 @@ static void test_against_double(void)
             CHECK_NEAR(q16(r.slope_deg), t, 1.0 / 65536);
             CHECK(q16(r.bound_deg) >= b - 2.0 / 65536); /* never under-bounds */
             CHECK(q16(r.bound_deg) <= b + 0.003 / cos(t * D2R) + 2.0 / 65536);
-            CHECK_NEAR(q16(r.grade_pct), 100.0 * tan(q16(r.slope_deg) * D2R), 1.0 / 65536);
+            /* the grade: 100 A_s / A_h of the same inputs, rounded (slope.h: 0.5 LSB + the
+             * norm's rounding); against the reported angle, the angle's 1 LSB through tan */
+            worst_g = fmax(worst_g, fabs(q16(r.grade_pct) - gr) * 65536.0);
+            CHECK_NEAR(q16(r.grade_pct), gr, 0.51 / 65536);
+            CHECK_NEAR(q16(r.grade_pct), 100.0 * tan(q16(r.slope_deg) * D2R),
+                       (100.0 * (1.0 + tan(t * D2R) * tan(t * D2R)) * D2R + 1.0) / 65536);
+            /* its bound holds the exact one (never under-bounds) and exceeds it only by e_a's
+             * round-up (3 LSB of g, through d grade / d a <= 100 (1 + |grade| / 100) / A_h on
+             * each axis) and the 2 LSB of GRADE_BOUND_ROUNDING */
+            worst_gb = fmax(worst_gb, (q16(r.bound_pct) - gb) * 65536.0);
+            CHECK(q16(r.bound_pct) >= gb);
+            CHECK(q16(r.bound_pct) <= gb +
+                                          2.0 * 3.0 / 65536 * 100.0 * (1.0 + fabs(gr) / 100.0) /
+                                              (m == 0 ? sqrt(1.0 - s * s) : fabs(g)) *
+                                              (1.0 + fabs(gr) / 100.0) +
+                                          2.5 / 65536);
         }
     }
     printf("max |slope error| %.2f LSB; bound above the exact one by at most %.1f LSB "
            "(e_a rounded up) over %d cases\n",
            worst_t, worst_b, 2 * SWEEP);
+    printf("grade: max |error| %.3f LSB against 100 A_s / A_h; its bound above the exact one by "
+           "at most %.1f LSB\n",
+           worst_g, worst_gb);
 }
 
 /* A cross slope does not change the two-axis slope: the gravity perpendicular to the slope axis
@@ -346,6 +371,32 @@ static void test_grade(void)
     CHECK_EQ_INT(slope_grade_pct(0), 0);
     CHECK_EQ_INT(slope_grade_pct(FX_DEG_90), INT32_MAX);
     CHECK_EQ_INT(slope_grade_pct(-FX_DEG_90), INT32_MIN);
+    {
+        /* slope_estimate's grade at the edges: the part on end (single axis, A_s = 1 g: no
+         * gravity left across it) saturates, and so does the bound of a box reaching it; two
+         * axes with no gravity at all read 0 % with a saturated bound; upside down (A_g < 0)
+         * the grade is the tangent of the angle past 90 deg */
+        struct slope_cfg c = base_cfg();
+        struct slope_input in = level_input(1.0, 0.0, 0.0);
+        struct slope_result r;
+        c.budget.offset_g = to_q16(0.01);
+        REQUIRE(slope_estimate(&c, &in, &r) == 0);
+        CHECK_EQ_INT(r.grade_pct, INT32_MAX);
+        in = level_input(-0.995, 0.0, 0.0);
+        REQUIRE(slope_estimate(&c, &in, &r) == 0);
+        CHECK(r.grade_pct < -FX_Q16_INT(900));
+        CHECK_EQ_INT(r.bound_pct, INT32_MAX);
+        c.method = SLOPE_TWO_AXIS;
+        in = level_input(0.0, 0.0, 0.0);
+        REQUIRE(slope_estimate(&c, &in, &r) == 0);
+        CHECK_EQ_INT(r.grade_pct, 0);
+        CHECK_EQ_INT(r.bound_pct, INT32_MAX);
+        CHECK((r.flags & SLOPE_F_MAGNITUDE) != 0u);
+        in = level_input(0.5, 0.0, -0.866);
+        REQUIRE(slope_estimate(&c, &in, &r) == 0);
+        CHECK_NEAR(q16(r.grade_pct), 100.0 * q16(in.accel_g[0]) / q16(in.accel_g[2]), 0.51 / 65536);
+        CHECK_NEAR(q16(r.grade_pct), 100.0 * tan(q16(r.slope_deg) * D2R), 3.0 / 65536);
+    }
 }
 
 static void test_sigma_factor(void)

@@ -66,23 +66,49 @@ int slope_sigma_factor(uint32_t runs, fx_q16_t expected_q16, fx_q16_t *k)
     return INC_OK;
 }
 
+/* 100 * num / den in Q16 %, num and den in one fixed-point unit, |num| < 2^40, |den| < 2^40:
+ * round to nearest, ties away from zero (|error| <= 0.5 LSB), saturated to INT32_MIN/MAX; den
+ * == 0 gives INT32_MAX or INT32_MIN by the sign of num (0 for 0 / 0). One division, so one
+ * rounding: |num| * 100 * 2^16 < 2^40 * 2^22.7 < 2^63. */
+static int32_t ratio_pct(int64_t num, int64_t den)
+{
+    int64_t p, q, r;
+    if (den == 0) {
+        return num > 0 ? INT32_MAX : (num < 0 ? INT32_MIN : 0);
+    }
+    p = num * (100 * 65536);
+    q = p / den; /* C11: truncates toward zero on every target */
+    r = p % den;
+    if (2u * fx_uabs64(r) >= fx_uabs64(den)) {
+        q += ((p < 0) != (den < 0)) ? -1 : 1;
+    }
+    return fx_sat32(q);
+}
+
 fx_q16_t slope_grade_pct(fx_q16_t deg)
 {
     fx_q30_t s, c;
-    int64_t num, q, r;
     fx_sincos_deg(deg, &s, &c); /* one quadrant reduction; same values as sin / cos */
-    if (c == 0) {
-        return s >= 0 ? INT32_MAX : INT32_MIN;
-    }
-    /* round(100 * s / c) with 16 fractional bits, in one division so only one rounding:
-     * |s| <= 2^30 and 100 * 2^16 < 2^23, so the numerator fits int64. */
-    num = (int64_t)s * (100 * 65536);
-    q = num / c; /* C11: truncates toward zero on every target */
-    r = num % c;
-    if (2u * fx_uabs64(r) >= fx_uabs32(c)) {
-        q += ((num < 0) != (c < 0)) ? -1 : 1; /* ties away from zero */
-    }
-    return fx_sat32(q);
+    return ratio_pct(s, c);     /* c == 0 only at +-90 deg, where s = +-1 */
+}
+
+/* The grade of the direction (a_s, a_h), a_s in Q16 g and a_h = (negative ? -1 : 1) sqrt(h2), h2
+ * in Q32 g^2: 100 a_s / a_h with a_h to Q30 (round(sqrt(h2 2^28))) when |a_s| < 2^26 and h2 <
+ * 2^34 (|a_h| < 4 g), so the norm's rounding is below 2^-31 of it; else in Q16 (a magnitude the
+ * estimate flags anyway). */
+static int32_t grade_of(int64_t a_s, uint64_t h2, bool negative)
+{
+    const bool fine = fx_uabs64(a_s) < (1ull << 26) && h2 < (1ull << 34);
+    const int64_t h = fine ? (int64_t)fx_isqrt64_round(h2 << 28) : (int64_t)fx_isqrt64_round(h2);
+    return ratio_pct(fine ? a_s * (1 << 14) : a_s, negative ? -h : h);
+}
+
+/* The single-axis grade of a_s (Q16 g) on a 1 g gravity: a_h = sqrt(1 g^2 - a_s^2); at |a_s|
+ * >= 1 g a_h = 0 (saturated). */
+static int32_t grade_1g(int64_t a_s)
+{
+    const uint64_t m = fx_uabs64(a_s);
+    return grade_of(a_s, m < (1u << 16) ? (1ull << 32) - m * m : 0u, false);
 }
 
 int slope_cfg_check(const struct slope_cfg *cfg)
@@ -151,12 +177,31 @@ static int32_t absdiff(int32_t a, int32_t b)
     return fx_abs(fx_sub(a, b));
 }
 
+static int32_t max32(int32_t a, int32_t b)
+{
+    return a > b ? a : b;
+}
+
+/* |grade at a corner of the box - the estimate's grade|; a saturated grade (a corner or the
+ * estimate at or past 90 deg) makes it unbounded: INT32_MAX. */
+static int32_t grade_change(int32_t corner, int32_t grade)
+{
+    if (corner == INT32_MAX || corner == INT32_MIN || grade == INT32_MAX || grade == INT32_MIN) {
+        return INT32_MAX;
+    }
+    return absdiff(corner, grade);
+}
+
+/* Grade LSBs added to the corners' largest grade change: the corner's own rounding (0.5 LSB) and
+ * the norm's (below 0.01 LSB within +-60 deg), rounded up (slope.h). */
+#define GRADE_BOUND_ROUNDING 2
+
 int slope_estimate(const struct slope_cfg *cfg, const struct slope_input *in,
                    struct slope_result *out)
 {
     int err;
     int64_t noise;
-    int32_t s, ea, theta, bound = 0;
+    int32_t s, ea, theta, bound = 0, grade_bound = 0;
     uint32_t flags = 0;
     if (out == NULL) {
         return INC_ERR_NULL;
@@ -191,6 +236,10 @@ int slope_estimate(const struct slope_cfg *cfg, const struct slope_input *in,
         if ((int64_t)fx_uabs32(s) > (int64_t)FX_Q16_ONE + cfg->magnitude_tol_g) {
             flags |= SLOPE_F_MAGNITUDE;
         }
+        /* the grade is monotonic in a_s too: its extremes are at the same two ends */
+        out->grade_pct = grade_1g(s);
+        grade_bound = max32(grade_change(grade_1g((int64_t)s + ea), out->grade_pct),
+                            grade_change(grade_1g((int64_t)s - ea), out->grade_pct));
     } else {
         /* The gravity component perpendicular to the slope axis is the norm of the gravity
          * axis and the cross axis: with a cross slope (roll) phi, A_g alone is cos(theta)
@@ -223,15 +272,15 @@ int slope_estimate(const struct slope_cfg *cfg, const struct slope_input *in,
             h_hi = -h_hi;
         }
         theta = fx_atan2_deg(s, fx_sat32(g));
+        out->grade_pct = grade_of(s, h2, gz < 0);
         /* Over a box that does not contain the origin, atan2 takes its extremes at the
-         * corners; a box that contains it (no gravity left) is flagged by the magnitude test. */
+         * corners, and so does the grade a_s / a_h (monotonic in each); a box that contains it
+         * (no gravity left) is flagged by the magnitude test. */
         for (c = 0; c < 4u; c++) {
             const int32_t cs = fx_sat32((int64_t)s + ((c & 1u) ? ea : -ea));
             const int32_t cg = fx_sat32((c & 2u) ? h_hi : h_lo);
-            const int32_t d = absdiff(fx_atan2_deg(cs, cg), theta);
-            if (d > bound) {
-                bound = d;
-            }
+            bound = max32(bound, absdiff(fx_atan2_deg(cs, cg), theta));
+            grade_bound = max32(grade_bound, grade_change(ratio_pct(cs, cg), out->grade_pct));
         }
         if (mag > (int64_t)FX_Q16_ONE + cfg->magnitude_tol_g ||
             mag < (int64_t)FX_Q16_ONE - cfg->magnitude_tol_g || gz <= eg || h_lo <= ea) {
@@ -247,16 +296,7 @@ int slope_estimate(const struct slope_cfg *cfg, const struct slope_input *in,
     out->bound_deg = bound;
     out->accel_bound_g = ea;
     out->noise_g = noise > INT32_MAX ? INT32_MAX : (int32_t)noise;
-    out->grade_pct = slope_grade_pct(theta);
-    {
-        /* Grade bound: the larger grade change at theta +- bound (tan is monotonic below 90). */
-        const int32_t hi = fx_add(theta, bound), lo = fx_sub(theta, bound);
-        int32_t gb = absdiff(slope_grade_pct(hi > FX_Q16_INT(89) ? FX_Q16_INT(89) : hi),
-                             out->grade_pct);
-        const int32_t gb2 = absdiff(out->grade_pct,
-                                    slope_grade_pct(lo < -FX_Q16_INT(89) ? -FX_Q16_INT(89) : lo));
-        out->bound_pct = gb2 > gb ? gb2 : gb;
-    }
+    out->bound_pct = fx_add(grade_bound, GRADE_BOUND_ROUNDING);
     out->flags = flags;
     out->valid = flags == 0u;
     return INC_OK;

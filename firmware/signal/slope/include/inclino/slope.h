@@ -84,9 +84,10 @@ struct slope_result {
     bool valid;             /* true only when flags == 0 */
     uint32_t flags;         /* enum slope_flag bits */
     fx_q16_t slope_deg;     /* theta, positive nose up (Q16 deg) */
-    fx_q16_t grade_pct;     /* 100 * tan(theta) (Q16 %) */
+    fx_q16_t grade_pct;     /* 100 * tan(theta) = 100 A_s / A_h (Q16 %; saturated at 90 deg) */
     fx_q16_t bound_deg;     /* |true theta - slope_deg| <= bound_deg given the budget (Q16 deg) */
-    fx_q16_t bound_pct;     /* the same bound in grade (Q16 %) */
+    fx_q16_t bound_pct;     /* |true grade - grade_pct| <= bound_pct given the budget (Q16 %;
+                               INT32_MAX when the box reaches 90 deg) */
     fx_q16_t accel_bound_g; /* e_a, the acceleration error bound of the slope axis (Q16 g) */
     fx_q16_t noise_g;       /* its noise term k * sigma / sqrt(N) (Q16 g) */
 };
@@ -124,7 +125,8 @@ int slope_estimate(const struct slope_cfg *cfg, const struct slope_input *in,
  */
 int slope_sigma_factor(uint32_t runs, fx_q16_t expected_q16, fx_q16_t *k);
 
-/* 100 * tan(deg) in Q16 percent, rounded to nearest (ties away from zero). |error| <= 1 LSB Q16
+/* 100 * tan(deg) in Q16 percent, rounded to nearest (ties away from zero). (slope_estimate
+ * takes its grade from the components instead, without the angle.) |error| <= 1 LSB Q16
  * (1.5e-5 %) for |deg| <= 60 deg: 0.5 LSB rounding plus the Q30 sin/cos errors (< 2.3e-7 %).
  * Saturates (INT32_MAX/MIN) within 0.002 deg of +-90 deg. */
 fx_q16_t slope_grade_pct(fx_q16_t deg);
