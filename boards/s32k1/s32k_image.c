@@ -33,8 +33,15 @@ S32K1_EARLY(s32k_image_bringup)
 S32K1_STEP void s32k_image_bringup(const struct s32k_board_desc *desc)
 {
     struct s32k_board *b = &s32k_image_board;
-    if (desc == NULL || s32k_board_init_core(b, desc, true) != INC_OK ||
-        s32k_board_spi_bitbang(b) != INC_OK) {
+    int err = desc != NULL ? s32k_board_init_core(b, desc, true) : INC_ERR_NULL;
+    if (err == INC_OK) {
+#if S32K_IMAGE_LPSPI
+        err = s32k_board_spi_lpspi(b);
+#else
+        err = s32k_board_spi_bitbang(b);
+#endif
+    }
+    if (err != INC_OK) {
         for (;;) {
             /* no refresh: the watchdog resets the part and the bring-up is tried again */
         }

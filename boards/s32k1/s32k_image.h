@@ -15,8 +15,15 @@
 /* The board the image runs on (its ISRs take it). */
 extern struct s32k_board s32k_image_board;
 
-/* Clocks, pins, the HAL port (watchdog refreshed) and the bit-banged engine on s32k_image_board
- * (the LPSPI driver is not linked). When it fails it never returns: it stops refreshing, so the
+/* S32K_IMAGE_LPSPI (a compile definition of the image, default 0): 0 brings the bit-banged engine
+ * up (the LPSPI driver is not linked), 1 the LPSPI engine (LPSPI0, sleeping on its interrupt;
+ * the bit-banged engine is not linked). */
+#ifndef S32K_IMAGE_LPSPI
+#define S32K_IMAGE_LPSPI 0
+#endif
+
+/* Clocks, pins, the HAL port (watchdog refreshed) and the engine of S32K_IMAGE_LPSPI on
+ * s32k_image_board. When it fails it never returns: it stops refreshing, so the
  * watchdog resets the part and the bring-up is tried again. */
 void s32k_image_bringup(const struct s32k_board_desc *desc);
 
