@@ -94,8 +94,8 @@ fx_q16_t slope_grade_pct(fx_q16_t deg)
 
 /* The grade of the direction (a_s, a_h), a_s in Q16 g and a_h = (negative ? -1 : 1) sqrt(h2), h2
  * in Q32 g^2: 100 a_s / a_h with a_h to Q30 (round(sqrt(h2 2^28))) when |a_s| < 2^26 and h2 <
- * 2^34 (|a_h| < 4 g), so the norm's rounding is below 2^-31 of it; else in Q16 (a magnitude the
- * estimate flags anyway). */
+ * 2^34 (|a_h| < 4 g): the norm's relative rounding is 2^-31 / |a_h| (a_h in g), below 0.01 LSB
+ * of grade within +-60 deg; else in Q16 (a magnitude the estimate flags anyway). */
 static int32_t grade_of(int64_t a_s, uint64_t h2, bool negative)
 {
     const bool fine = fx_uabs64(a_s) < (1ull << 26) && h2 < (1ull << 34);
