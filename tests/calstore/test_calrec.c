@@ -374,6 +374,24 @@ static void test_wrong_sensor(void)
     CHECK(fix_record_is_default(&out));
 }
 
+/* The binding an image carries, read without a check (calrec_image_binding): the golden image's
+ * is the fixture's; too short an image or a NULL is refused and leaves *out as it was. */
+static void test_image_binding(void)
+{
+    struct calrec_binding want, got, keep;
+    fix_binding(&want);
+    memset(&got, 0x5A, sizeof got);
+    CHECK_OK(calrec_image_binding(golden_v2, sizeof golden_v2, &got));
+    CHECK(calrec_binding_equal(&got, &want));
+    CHECK_OK(calrec_image_binding(golden_v2, CALREC_OFF_BINDING + 24u, &got)); /* just enough */
+    memset(&got, 0x5A, sizeof got);
+    keep = got;
+    CHECK_ERR(calrec_image_binding(golden_v2, CALREC_OFF_BINDING + 23u, &got), INC_ERR_INVAL);
+    CHECK(memcmp(&got, &keep, sizeof got) == 0);
+    CHECK_ERR(calrec_image_binding(NULL, sizeof golden_v2, &got), INC_ERR_NULL);
+    CHECK_ERR(calrec_image_binding(golden_v2, sizeof golden_v2, NULL), INC_ERR_NULL);
+}
+
 static void test_header_errors(void)
 {
     struct calrec_binding e;
@@ -488,6 +506,7 @@ int main(void)
     UNIT_RUN(test_pwl_two_knots);
     UNIT_RUN(test_binding_rules);
     UNIT_RUN(test_wrong_sensor);
+    UNIT_RUN(test_image_binding);
     UNIT_RUN(test_header_errors);
     UNIT_RUN(test_every_bit_flip);
     UNIT_RUN(test_null_and_sizes);

@@ -362,13 +362,8 @@ static void test_station_dflash_image(void)
     REQUIRE(read_file(dflash_path, img, sizeof img) == 2u * S32K_DFLASH_SECTOR);
     REQUIRE(read_file(record_path, rec_img, sizeof rec_img) == CALREC_IMAGE_SIZE);
     memset(&want, 0, sizeof want);
-    /* the record file decoded against the binding it carries (CALREC_OFF_BINDING, calrec.h) */
-    other.family = calrec_get_le32(&rec_img[CALREC_OFF_BINDING]);
-    other.product = calrec_get_le32(&rec_img[CALREC_OFF_BINDING + 4u]);
-    other.revision = calrec_get_le32(&rec_img[CALREC_OFF_BINDING + 8u]);
-    other.serial = calrec_get_le32(&rec_img[CALREC_OFF_BINDING + 12u]);
-    other.lot_id1 = calrec_get_le32(&rec_img[CALREC_OFF_BINDING + 16u]);
-    other.lot_id2 = calrec_get_le32(&rec_img[CALREC_OFF_BINDING + 20u]);
+    /* the record file decoded against the binding it carries */
+    REQUIRE(calrec_image_binding(rec_img, CALREC_IMAGE_SIZE, &other) == INC_OK);
     REQUIRE(calrec_decode(rec_img, CALREC_IMAGE_SIZE, &other, &want, &seq) == INC_OK);
     for (p = 0; p < 2u; p++) {
         REQUIRE(model_up(parts[p], 0x0, 0, 0, true) == 0);

@@ -29,14 +29,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     if ((data[0] & 1u) && len >= CALREC_IMAGE_SIZE) {
         calrec_put_le32(&img[CALREC_OFF_CRC], crc32_update(0, img, CALREC_OFF_CRC));
     }
-    if ((data[0] & 2u) && len >= CALREC_OFF_BINDING + 24u) {
-        b.family = calrec_get_le32(&img[CALREC_OFF_BINDING]);
-        b.product = calrec_get_le32(&img[CALREC_OFF_BINDING + 4u]);
-        b.revision = calrec_get_le32(&img[CALREC_OFF_BINDING + 8u]);
-        b.serial = calrec_get_le32(&img[CALREC_OFF_BINDING + 12u]);
-        b.lot_id1 = calrec_get_le32(&img[CALREC_OFF_BINDING + 16u]);
-        b.lot_id2 = calrec_get_le32(&img[CALREC_OFF_BINDING + 20u]);
-    } else {
+    if ((data[0] & 2u) == 0u || calrec_image_binding(img, len, &b) != INC_OK) {
         memset(&b, 0, sizeof b);
         b.family = CALREC_FAMILY_ADIS163XX;
         b.product = 16405u;

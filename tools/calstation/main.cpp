@@ -713,12 +713,7 @@ int load_record(const char *path, struct calrec &r, struct calrec_binding &b, ui
     }
     // Decode against the binding the image itself carries: this shows what is inside; the
     // firmware decodes against the identity it reads from the part.
-    b.family = calrec_get_le32(&img[CALREC_OFF_BINDING]);
-    b.product = calrec_get_le32(&img[CALREC_OFF_BINDING + 4]);
-    b.revision = calrec_get_le32(&img[CALREC_OFF_BINDING + 8]);
-    b.serial = calrec_get_le32(&img[CALREC_OFF_BINDING + 12]);
-    b.lot_id1 = calrec_get_le32(&img[CALREC_OFF_BINDING + 16]);
-    b.lot_id2 = calrec_get_le32(&img[CALREC_OFF_BINDING + 20]);
+    (void)calrec_image_binding(img.data(), img.size(), &b); /* the size is checked above */
     const int d = calrec_decode(img.data(), img.size(), &b, &r, &seq);
     if (d != INC_OK) {
         std::fprintf(stderr, "calstation: %s: calrec_decode refused the image (%s)\n", path,

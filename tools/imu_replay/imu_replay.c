@@ -975,12 +975,7 @@ int main(int argc, char **argv)
             }
             /* The recording has no part to read a serial number from: the record's serial and lot
              * ids are taken, the family, product and revision must be the chosen part's. */
-            b.family = calrec_get_le32(&img[CALREC_OFF_BINDING]);
-            b.product = calrec_get_le32(&img[CALREC_OFF_BINDING + 4u]);
-            b.revision = calrec_get_le32(&img[CALREC_OFF_BINDING + 8u]);
-            b.serial = calrec_get_le32(&img[CALREC_OFF_BINDING + 12u]);
-            b.lot_id1 = calrec_get_le32(&img[CALREC_OFF_BINDING + 16u]);
-            b.lot_id2 = calrec_get_le32(&img[CALREC_OFF_BINDING + 20u]);
+            (void)calrec_image_binding(img, CALREC_IMAGE_SIZE, &b); /* the whole image is read */
             rid.id.serial = b.serial;
             rid.id.lot_id1 = b.lot_id1;
             rid.id.lot_id2 = b.lot_id2;

@@ -367,6 +367,21 @@ int calrec_check_image(const uint8_t *img, size_t len, const struct calrec_bindi
     return coeffs_ok(img, NULL) ? INC_OK : INC_ERR_RANGE;
 }
 
+int calrec_image_binding(const uint8_t *img, size_t len, struct calrec_binding *out)
+{
+    unsigned i;
+    if (img == NULL || out == NULL) {
+        return INC_ERR_NULL;
+    }
+    if (len < CALREC_OFF_BINDING + 4u * BINDING_WORDS) {
+        return INC_ERR_INVAL;
+    }
+    for (i = 0; i < BINDING_WORDS; i++) {
+        word_set(out, i, calrec_get_le32(&img[CALREC_OFF_BINDING + 4u * i]));
+    }
+    return INC_OK;
+}
+
 int calrec_decode(const uint8_t *img, size_t len, const struct calrec_binding *expect,
                   struct calrec *out, uint32_t *seq)
 {

@@ -280,6 +280,13 @@ int calrec_decode(const uint8_t *img, size_t len, const struct calrec_binding *e
                   struct calrec *out, uint32_t *seq);
 
 /* Little-endian 32-bit load and store, byte by byte (alignment- and host-order-independent). */
+/*
+ * The binding an image carries (its six words at CALREC_OFF_BINDING), not checked: what a tool
+ * shows of a record, or decodes it against. 0; INC_ERR_NULL; INC_ERR_INVAL (len too short for the
+ * binding, *out untouched).
+ */
+int calrec_image_binding(const uint8_t *img, size_t len, struct calrec_binding *out);
+
 uint32_t calrec_get_le32(const uint8_t *p);
 void calrec_put_le32(uint8_t *p, uint32_t v);
 
