@@ -480,16 +480,10 @@ int epb_rig_power_up(struct epb_rig *r, const struct app_cfg *cfg)
     if (err != INC_OK) {
         return err;
     }
-    memset(&sc, 0, sizeof(sc));
-    sc.ops = &simflash_calstore_ops;
-    sc.ctx = &r->flash;
-    sc.page_size = RIG_FLASH_PAGE;
-    sc.prog_size = RIG_FLASH_PROG;
-    sc.erased_value = CALSTORE_ERASED;
-    sc.slot_addr[0] = 0u;
-    sc.slot_addr[1] = RIG_FLASH_PAGE;
-    sc.slot_size = RIG_FLASH_PAGE;
-    err = calstore_init(&r->store, &sc);
+    err = simflash_calstore_config(&r->flash, &sc); /* a slot in each of its two pages */
+    if (err == INC_OK) {
+        err = calstore_init(&r->store, &sc);
+    }
     if (err != INC_OK) {
         return err;
     }

@@ -339,3 +339,24 @@ void simflash_reset_stats(struct simflash *f)
         memset(&f->stats, 0, sizeof f->stats);
     }
 }
+
+int simflash_calstore_config(struct simflash *f, struct calstore_config *out)
+{
+    uint32_t slot;
+    if (f == NULL || out == NULL) {
+        return INC_ERR_NULL;
+    }
+    if (f->geo.page_count % 2u != 0u) {
+        return INC_ERR_INVAL;
+    }
+    slot = f->geo.page_size * (f->geo.page_count / 2u);
+    out->ops = &simflash_calstore_ops;
+    out->ctx = f;
+    out->page_size = f->geo.page_size;
+    out->prog_size = f->geo.prog_size;
+    out->erased_value = CALSTORE_ERASED;
+    out->slot_addr[0] = 0u;
+    out->slot_addr[1] = slot;
+    out->slot_size = slot;
+    return INC_OK;
+}

@@ -6,6 +6,7 @@ extern "C" {
 #include "inclino/calstore_ftfc.h"
 #include "inclino/error.h"
 #include "inclino/s32k_ftfc.h"
+#include "inclino/simflash.h"
 }
 
 #include <algorithm>
@@ -21,39 +22,6 @@ namespace
 
 constexpr uint32_t kSpan = 2u * S32K_DFLASH_SECTOR;
 constexpr size_t kLine = 32u; // data bytes per output line
-
-// The RAM copy of the two sectors behind calstore_flash_ops (offsets from the first sector).
-struct Ram {
-    uint8_t mem[kSpan];
-};
-
-int ram_read(void *ctx, uint32_t addr, uint8_t *buf, uint32_t len)
-{
-    Ram *r = static_cast<Ram *>(ctx);
-    if (addr > kSpan || len > kSpan - addr) return INC_ERR_IO;
-    std::memcpy(buf, r->mem + addr, len);
-    return INC_OK;
-}
-
-int ram_program(void *ctx, uint32_t addr, const uint8_t *buf, uint32_t len)
-{
-    Ram *r = static_cast<Ram *>(ctx);
-    if (addr > kSpan || len > kSpan - addr) return INC_ERR_IO;
-    for (uint32_t i = 0; i < len; i++) {
-        r->mem[addr + i] &= buf[i]; // NOR: programming clears bits only
-    }
-    return INC_OK;
-}
-
-int ram_erase(void *ctx, uint32_t addr)
-{
-    Ram *r = static_cast<Ram *>(ctx);
-    if (addr % S32K_DFLASH_SECTOR != 0u || addr >= kSpan) return INC_ERR_IO;
-    std::memset(r->mem + addr, CALSTORE_ERASED, S32K_DFLASH_SECTOR);
-    return INC_OK;
-}
-
-const calstore_flash_ops kRamOps = {ram_read, ram_program, ram_erase};
 
 uint8_t sum_bytes(const std::vector<uint8_t> &v)
 {
@@ -76,21 +44,15 @@ std::string hex_line(const char *lead, const std::vector<uint8_t> &v, uint8_t ch
 
 std::string dflash_image(const struct calrec &rec, std::vector<uint8_t> &bytes, uint32_t &addr)
 {
-    static_assert(S32K_DFLASH_SECTOR % S32K_FTFC_PHRASE == 0, "sector of whole phrases");
-    Ram ram;
-    std::memset(ram.mem, CALSTORE_ERASED, sizeof ram.mem);
-    calstore_config cfg{};
-    cfg.ops = &kRamOps;
-    cfg.ctx = &ram;
-    cfg.page_size = S32K_DFLASH_SECTOR;
-    cfg.prog_size = S32K_FTFC_PHRASE;
-    cfg.erased_value = CALSTORE_ERASED;
-    cfg.slot_addr[0] = 0u;
-    cfg.slot_addr[1] = S32K_DFLASH_SECTOR;
-    cfg.slot_size = S32K_DFLASH_SECTOR;
+    static uint8_t mem[kSpan]; // the two sectors, as a NOR flash (sim/flash)
+    static simflash flash;
     static calstore st; // about 700 bytes: off the stack
-    int err = calstore_init(&st, &cfg);
+    const simflash_geometry geo = {S32K_DFLASH_SECTOR, 2u, S32K_FTFC_PHRASE};
+    calstore_config cfg{};
     calstore_info info{};
+    int err = simflash_init(&flash, mem, sizeof mem, &geo); // erased: 0xFF
+    if (err == INC_OK) err = simflash_calstore_config(&flash, &cfg);
+    if (err == INC_OK) err = calstore_init(&st, &cfg);
     if (err == INC_OK) err = calstore_save(&st, &rec, &info);
     if (err != INC_OK) {
         return std::string("calstore_save refused the record (") + inc_err_name(err) + ")";
@@ -98,7 +60,7 @@ std::string dflash_image(const struct calrec &rec, std::vector<uint8_t> &bytes, 
     if (info.used_slot != 0 || info.seq != 1u) {
         return "calstore_save did not write slot 0 with sequence number 1";
     }
-    bytes.assign(ram.mem, ram.mem + kSpan);
+    bytes.assign(mem, mem + kSpan);
     addr = S32K_DFLASH_BASE + CALSTORE_FTFC_IMAGE_SECTOR * S32K_DFLASH_SECTOR;
     return "";
 }

@@ -120,6 +120,11 @@ int simflash_erase(struct simflash *f, uint32_t addr);
 /* The same operations as a calstore flash driver; ctx is the struct simflash. */
 extern const struct calstore_flash_ops simflash_calstore_ops;
 
+/* A calibration store's configuration on all of f (initialised): two slots of half its pages
+ * each, slot 0 first, with f's page and program sizes and simflash_calstore_ops. INC_ERR_NULL;
+ * INC_ERR_INVAL when f's page count is odd. */
+int simflash_calstore_config(struct simflash *f, struct calstore_config *out);
+
 /* ---- Power ------------------------------------------------------------------------------- */
 
 /* Program/erase steps begun since init (a cut step counts as begun). */

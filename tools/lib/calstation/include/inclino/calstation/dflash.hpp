@@ -2,13 +2,14 @@
 //
 // The S32K1 images keep the record in the FlexNVM data flash through the calibration store
 // (firmware/services/calstore_ftfc: two 2 KiB sectors from CALSTORE_FTFC_IMAGE_SECTOR, 8-byte
-// phrases). dflash_image() runs the firmware's own calstore_save on an erased RAM copy of those
-// two sectors, so the bytes are the store's format exactly: slot 0 holds the record, CRC and
-// commit word, sequence number 1; slot 1 is erased (0xFF), so programming both sectors also
-// wipes a record an earlier calibration left there. The writers give the two sectors at their
-// address in the MCU's memory map (S32K_DFLASH_BASE + sector offset) as Motorola S-records (S3
-// data, S7 end) or Intel HEX (type 04 extended linear address, 00 data, 01 end), 32 data bytes a
-// line, for the probe's flash tool (docs/boards.md, docs/calibration.md 4.6).
+// phrases). dflash_image() runs the firmware's own calstore_save on an erased copy of those two
+// sectors (the NOR emulation of sim/flash), so the bytes are the store's format exactly: slot 0
+// holds the record, CRC and commit word, sequence number 1; slot 1 is erased (0xFF), so
+// programming both sectors also wipes a record an earlier calibration left there. The writers
+// give the two sectors at their address in the MCU's memory map (S32K_DFLASH_BASE + sector
+// offset) as Motorola S-records (S3 data, S7 end) or Intel HEX (type 04 extended linear address,
+// 00 data, 01 end), 32 data bytes a line, for the probe's flash tool (docs/boards.md,
+// docs/calibration.md 4.6).
 #ifndef INCLINO_CALSTATION_DFLASH_HPP
 #define INCLINO_CALSTATION_DFLASH_HPP
 
