@@ -13,9 +13,8 @@
  */
 #include <math.h>
 #include <setjmp.h>
-#include <string.h>
 
-#include "epb_image.h"
+#include "epb_image_test.h"
 #include "inclino/sim/epb_rig_state.h"
 #include "inclino/simflash.h"
 #include "unit.h"
@@ -144,30 +143,11 @@ static void test_eol_through_diag(void)
     static struct epb_image_board b;
     struct sim_calpart_params part;
     double truth;
-    sim_calpart_ideal(&part);
-    part.acc_bias[0].y0 = 0.02;
-    part.acc_bias[1].y0 = -0.01;
-    part.acc_bias[2].y0 = 0.015;
-    part.acc_scale[0].y0 = 1.02;
-    part.acc_scale[2].y0 = 0.99;
-    part.acc_noise_g = 0.002;
+    epb_test_part(&part);
     REQUIRE(epb_rig_init(&rig, EPB_RIG_ADIS16405, &part, 11u) == INC_OK);
     epb_rig_station(&rig, CAL_FACE_ZP, 25.0);
-    memset(&sc, 0, sizeof sc);
-    sc.ops = &simflash_calstore_ops;
-    sc.ctx = &rig.flash;
-    sc.page_size = 1024u;
-    sc.prog_size = 8u;
-    sc.erased_value = CALSTORE_ERASED;
-    sc.slot_addr[0] = 0u;
-    sc.slot_addr[1] = 1024u;
-    sc.slot_size = 1024u;
-    b.hal = &rig.board.hal;
-    b.spi = &rig.board.spi.bus;
-    b.cs = SIM_BOARD_CS(0);
-    b.dr = SIM_BOARD_DR(0);
-    b.per_result = hook;
-    b.store = &sc;
+    REQUIRE(simflash_calstore_config(&rig.flash, &sc) == INC_OK); /* two 1 KiB slots */
+    epb_test_board(&b, &rig, hook, &sc);
     if (setjmp(done_jmp) == 0) {
         epb_image_run_on(&b); /* never returns; the hook jumps back at S_END */
     }

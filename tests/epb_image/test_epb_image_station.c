@@ -18,7 +18,7 @@
 #include <setjmp.h>
 #include <string.h>
 
-#include "epb_image.h"
+#include "epb_image_test.h"
 #include "inclino/sim/epb_rig_state.h"
 #include "inclino/simflash.h"
 #include "unit.h"
@@ -128,33 +128,14 @@ static void test_station_end_of_line(void)
     struct epb_rig_vehicle v;
     double truth;
     int i, k;
-    sim_calpart_ideal(&part);
-    part.acc_bias[0].y0 = 0.02;
-    part.acc_bias[1].y0 = -0.01;
-    part.acc_bias[2].y0 = 0.015;
-    part.acc_scale[0].y0 = 1.02;
-    part.acc_scale[2].y0 = 0.99;
-    part.acc_noise_g = 0.002;
+    epb_test_part(&part);
     REQUIRE(epb_rig_init(&rig, EPB_RIG_ADIS16405, &part, 12u) == INC_OK);
     g.page_size = SECTOR;
     g.page_count = 2u;
     g.prog_size = PHRASE;
     REQUIRE(simflash_init(&dflash, dflash_mem, sizeof dflash_mem, &g) == INC_OK);
-    memset(&sc, 0, sizeof sc);
-    sc.ops = &simflash_calstore_ops;
-    sc.ctx = &dflash;
-    sc.page_size = SECTOR;
-    sc.prog_size = PHRASE;
-    sc.erased_value = CALSTORE_ERASED;
-    sc.slot_addr[0] = 0u;
-    sc.slot_addr[1] = SECTOR;
-    sc.slot_size = SECTOR;
-    b.hal = &rig.board.hal;
-    b.spi = &rig.board.spi.bus;
-    b.cs = SIM_BOARD_CS(0);
-    b.dr = SIM_BOARD_DR(0);
-    b.per_result = hook;
-    b.store = &sc;
+    REQUIRE(simflash_calstore_config(&dflash, &sc) == INC_OK); /* a slot per sector */
+    epb_test_board(&b, &rig, hook, &sc);
     if (setjmp(done_jmp) == 0) {
         epb_image_run_on(&b); /* never returns; the hook jumps back when the faces are read */
     }
