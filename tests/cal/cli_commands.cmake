@@ -8,20 +8,10 @@
 if(NOT TOOL OR NOT WORKDIR)
   message(FATAL_ERROR "TOOL and WORKDIR are required")
 endif()
-include(${CMAKE_CURRENT_LIST_DIR}/../../cmake/scripts/tool_summary.cmake)
+include(${CMAKE_CURRENT_LIST_DIR}/calstation_run.cmake)
 file(REMOVE_RECURSE ${WORKDIR})
 file(MAKE_DIRECTORY ${WORKDIR})
 set(W ${WORKDIR})
-
-# run(<name> <expected status> <summary keys> args...)
-function(run name status keys)
-  execute_process(COMMAND ${TOOL} ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT rc STREQUAL "${status}")
-    message(SEND_ERROR "${name}: exit status ${rc}, expected ${status}\n${out}${err}")
-  endif()
-  tool_summary_check("${out}" "tool=calstation;${keys}" "${name}")
-  set(out "${out}" PARENT_SCOPE)
-endfunction()
 
 # The value of key in the summary line of out.
 function(key_of out key var)
